@@ -1,0 +1,53 @@
+#pragma once
+
+#include <engine/MeshData.h>
+
+#include <glm/glm.hpp>
+
+#include <memory>
+
+namespace engine {
+
+/// @brief Draws a mesh with the entity's world transform.
+struct MeshComponent {
+    std::shared_ptr<const MeshData> mesh;
+};
+
+enum class LightType { Directional, Spot };
+
+/// @brief A light; it shines along the entity's local -Z axis (position matters for spot lights only).
+struct LightComponent {
+    LightType type = LightType::Directional;
+    /// Linear RGB colour. Default white.
+    glm::vec3 color{1.0f};
+    /// Scale on colour: irradiance for directional lights, intensity for spot lights. Default 1.
+    float intensity = 1.0f;
+    /// Whether shadow modules should make a shadow map for this light. Default true.
+    bool castsShadows = true;
+    /// Spot only: distance in world units beyond which the light has no effect; 0 = unlimited. Default 0.
+    float range = 0.0f;
+    /// Spot only: half-angle in radians where the falloff starts. Default 0.4 rad (~23°).
+    float innerConeAngle = 0.4f;
+    /// Spot only: half-angle in radians where the light reaches zero. Default 0.5 rad (~29°).
+    float outerConeAngle = 0.5f;
+};
+
+enum class ProjectionType { Perspective, Orthographic };
+
+/// @brief A camera looking along the entity's local -Z axis.
+struct CameraComponent {
+    ProjectionType projection = ProjectionType::Perspective;
+    /// Perspective only: vertical field of view in radians. Default 0.8 rad (~46°).
+    float verticalFov = 0.8f;
+    /// Orthographic only: full height of the view volume in world units. Default 10.
+    float orthographicHeight = 10.0f;
+    /// Near plane distance, world units, > 0. Default 0.1.
+    float nearPlane = 0.1f;
+    /// Far plane distance, world units, > nearPlane. Default 100.
+    float farPlane = 100.0f;
+
+    /// @brief OpenGL clip-space projection for a viewport of the given width/height ratio.
+    [[nodiscard]] glm::mat4 projectionMatrix(float aspect) const;
+};
+
+} // namespace engine

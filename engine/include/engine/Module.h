@@ -1,0 +1,88 @@
+#pragma once
+
+#include <engine/FrameContext.h>
+#include <engine/ShaderLibrary.h>
+#include <engine/ShaderVariantKey.h>
+
+#include <cstdint>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+namespace engine {
+
+class ProgramCache;
+namespace gl {
+class Program;
+}
+
+/// @brief Bumped whenever Module, ModuleHost, FrameContext or DrawContext change layout or meaning.
+inline constexpr std::uint32_t kModuleAbiVersion = 1;
+
+/// @brief Identifies the compiler and C++ library ABI; a module built with another one is refused,
+/// because C++ classes cross the module boundary.
+#define GS_MODULE_BUILD_TAG                                                                                          \
+    "gcc-abi-" GS_STRINGIFY(__GXX_ABI_VERSION) "-cxx11abi-" GS_STRINGIFY(_GLIBCXX_USE_CXX11_ABI)
+#define GS_STRINGIFY_IMPL(x) #x
+#define GS_STRINGIFY(x) GS_STRINGIFY_IMPL(x)
+
+/// @brief Services the engine offers to attached modules.
+class ModuleHost {
+public:
+    virtual ~ModuleHost() = default;
+    /// @brief Where modules register their GLSL files (names should start with the module's folder).
+    virtual ShaderLibrary& shaders() = 0;
+    /// @brief The lazy program cache; modules compile their own pass programs through it.
+    virtual ProgramCache& programs() = 0;
+    /// @brief The variant bit for `defineName` (registered on first use).
+    virtual ShaderVariantKey variantFlag(std::string_view defineName) = 0;
+    /// @brief Reserves a texture unit no other module or the engine uses.
+    virtual GLuint reserveTextureUnit() = 0;
+    /// @brief Draws every mesh of `scene`; `beforeDraw(entity, model)` sets per-draw state and may
+    /// return false to skip that mesh. Used by pre-passes (e.g. shadow maps) with their own program.
+    virtual void drawMeshes(const Scene& scene,
+                            const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) = 0;
+};
+
+/// @brief A plugin that extends the renderer. The engine calls the hooks in this fixed order:
+///
+/// 1. `attach` once, then `shaderChunks` (chunks are injected into every program compiled afterwards);
+/// 2. per frame, for every module in attach order: `prepareFrame`, then `renderPrePasses`;
+/// 3. the lighting pass: per draw, `variantBits` of every module pick the program variant, then
+///    `bindLightingResources` of every module runs with that program in use;
+/// 4. `debugDraw` of every module, with the frame's target bound;
+/// 5. `detach` once before the module is destroyed.
+class Module {
+public:
+    virtual ~Module() = default;
+    [[nodiscard]] virtual std::string_view name() const = 0;
+
+    virtual void attach(ModuleHost& /*host*/) {}
+    virtual void detach() {}
+    [[nodiscard]] virtual std::vector<ShaderChunk> shaderChunks() const { return {}; }
+    virtual void prepareFrame(const FrameContext& /*frame*/) {}
+    virtual void renderPrePasses(const FrameContext& /*frame*/) {}
+    [[nodiscard]] virtual ShaderVariantKey variantBits(const DrawContext& /*draw*/) const { return 0; }
+    virtual void bindLightingResources(const gl::Program& /*program*/, const DrawContext& /*draw*/) {}
+    virtual void debugDraw(const FrameContext& /*frame*/) {}
+};
+
+/// @brief What a module shared library exports through `gsModuleDescriptor()`.
+struct ModuleDescriptor {
+    std::uint32_t abiVersion;
+    const char* buildTag;
+    const char* name;
+    Module* (*create)();
+    void (*destroy)(Module*);
+};
+
+} // namespace engine
+
+/// @brief Exports `ModuleClass` from a module shared library under `moduleName`.
+#define GS_EXPORT_MODULE(moduleName, ModuleClass)                                                                    \
+    extern "C" __attribute__((visibility("default"))) const engine::ModuleDescriptor* gsModuleDescriptor() {        \
+        static const engine::ModuleDescriptor descriptor{                                                            \
+            engine::kModuleAbiVersion, GS_MODULE_BUILD_TAG, moduleName,                                              \
+            []() -> engine::Module* { return new ModuleClass(); }, [](engine::Module* module) { delete module; }}; \
+        return &descriptor;                                                                                          \
+    }

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <engine/gl/GlObject.h>
+#include <engine/gl/Texture.h>
+
+#include <string_view>
+
+namespace engine::gl {
+
+/// @brief Framebuffer object; attach textures, then check() before drawing.
+class Framebuffer {
+public:
+    /// @brief Creates an empty framebuffer; `label` names it in KHR_debug messages and errors.
+    explicit Framebuffer(std::string_view label);
+
+    void attach(GLenum attachment, const Texture& texture, GLint level = 0);
+    /// @brief Selects which colour attachments are drawn to; none for depth-only passes.
+    void setDrawBuffers(std::initializer_list<GLenum> buffers);
+    /// @brief Throws GlError naming the framebuffer when it is incomplete.
+    void check() const;
+    void bind() const;
+
+    [[nodiscard]] GLuint id() const { return object_.id(); }
+
+private:
+    GlObject<detail::deleteFramebuffer> object_;
+    std::string label_;
+};
+
+} // namespace engine::gl

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <engine/gl/GlObject.h>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace engine::gl {
+
+/// @brief Fully preprocessed source of one shader stage.
+///
+/// `fileNames[i]` names GLSL source string number `i` as used by `#line <line> <i>` directives, so
+/// driver messages can be mapped back to the file that holds the offending line.
+struct ShaderStageSource {
+    GLenum stage = GL_VERTEX_SHADER;
+    std::string text;
+    std::vector<std::string> fileNames;
+};
+
+/// @brief Linked GLSL program with a uniform location cache.
+class Program {
+public:
+    /// @brief Compiles and links; throws ShaderError whose message names `label`, file and line.
+    Program(std::string_view label, std::span<const ShaderStageSource> stages);
+
+    void use() const;
+    /// @brief Location of uniform `name`, or -1 when the linker removed or never had it.
+    [[nodiscard]] GLint uniformLocation(std::string_view name) const;
+
+    void set(std::string_view name, int value) const;
+    void set(std::string_view name, float value) const;
+    void set(std::string_view name, const glm::vec2& value) const;
+    void set(std::string_view name, const glm::vec3& value) const;
+    void set(std::string_view name, const glm::vec4& value) const;
+    void set(std::string_view name, const glm::mat3& value) const;
+    void set(std::string_view name, const glm::mat4& value) const;
+
+    [[nodiscard]] GLuint id() const { return object_.id(); }
+    [[nodiscard]] const std::string& label() const { return label_; }
+
+private:
+    GlObject<detail::deleteProgram> object_;
+    std::string label_;
+    mutable std::unordered_map<std::string, GLint> locations_;
+};
+
+/// @brief Rewrites driver log locations such as `0:12(3)` (Mesa) or `0(12)` (NVIDIA) into
+/// `file.glsl:12:3` / `file.glsl:12` using the `#line` source-string table.
+std::string mapShaderLog(std::string_view log, std::span<const std::string> fileNames);
+
+} // namespace engine::gl

@@ -1,0 +1,175 @@
+#include <engine/Error.h>
+#include <engine/ForwardRenderer.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstring>
+#include <iostream>
+
+namespace engine {
+
+namespace {
+
+// std140 mirror of FrameBlock in shaders/frame.glsl.
+struct alignas(16) LightBlock {
+    glm::vec4 colorIntensity;
+    glm::vec4 position;
+    glm::vec4 direction;
+    glm::vec4 spot;
+};
+struct alignas(16) FrameBlock {
+    glm::mat4 viewProjection;
+    glm::vec4 cameraPosition;
+    glm::vec4 ambient;
+    glm::ivec4 lightCount;
+    LightBlock lights[ForwardRenderer::kMaxLights];
+};
+static_assert(sizeof(FrameBlock) == 64 + 16 * 3 + 64 * ForwardRenderer::kMaxLights);
+
+const ProgramDesc kForwardProgram{"forward.vert", "forward.frag"};
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+};
+
+} // namespace
+
+ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& programs)
+    : programs_(programs), flatNormalsFlag_(layout.flag("GS_FLAT_NORMALS")),
+      spotLightsFlag_(layout.flag("GS_HAS_SPOT_LIGHTS")),
+      frameBlock_(sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
+
+FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
+                                         std::uint64_t frameIndex) {
+    const Entity& cameraEntity = scene.entity(camera);
+    if (!cameraEntity.camera) {
+        throw Error("render: entity '" + cameraEntity.name + "' has no camera component");
+    }
+    FrameContext frame(scene);
+    frame.camera = camera;
+    frame.target = target;
+    frame.frameIndex = frameIndex;
+    const glm::mat4 cameraWorld = scene.worldMatrix(camera);
+    frame.view = glm::inverse(cameraWorld);
+    const float aspect = target.size.y > 0 ? static_cast<float>(target.size.x) / static_cast<float>(target.size.y) : 1.0f;
+    frame.projection = cameraEntity.camera->projectionMatrix(aspect);
+    frame.viewProjection = frame.projection * frame.view;
+    frame.cameraPosition = glm::vec3(cameraWorld[3]);
+
+    FrameBlock block{};
+    block.viewProjection = frame.viewProjection;
+    block.cameraPosition = glm::vec4(frame.cameraPosition, 1.0f);
+    block.ambient = glm::vec4(environment.ambient, 0.0f);
+    sceneHasSpotLights_ = false;
+    std::size_t skipped = 0;
+    scene.forEach([&](EntityId id, const Entity& entity) {
+        if (!entity.light) {
+            return;
+        }
+        if (frame.lights.size() == kMaxLights) {
+            ++skipped;
+            return;
+        }
+        const glm::mat4 world = scene.worldMatrix(id);
+        FrameLight light;
+        light.index = static_cast<int>(frame.lights.size());
+        light.entity = id;
+        light.light = *entity.light;
+        light.position = glm::vec3(world[3]);
+        light.direction = glm::normalize(-glm::vec3(world[2]));
+        const bool spot = light.light.type == LightType::Spot;
+        sceneHasSpotLights_ = sceneHasSpotLights_ || spot;
+        block.lights[light.index] = {
+            glm::vec4(light.light.color, light.light.intensity),
+            glm::vec4(light.position, spot ? 1.0f : 0.0f),
+            glm::vec4(light.direction, 0.0f),
+            glm::vec4(std::cos(light.light.innerConeAngle), std::cos(light.light.outerConeAngle), light.light.range, 0.0f)};
+        frame.lights.push_back(light);
+    });
+    if (skipped > 0) {
+        std::cerr << "render: the scene has " << (frame.lights.size() + skipped) << " lights; only the first "
+                  << kMaxLights << " are drawn\n";
+    }
+    block.lightCount = glm::ivec4(static_cast<int>(frame.lights.size()), 0, 0, 0);
+    frameBlock_.update(0, sizeof block, &block);
+    return frame;
+}
+
+const ForwardRenderer::GpuMesh& ForwardRenderer::upload(const std::shared_ptr<const MeshData>& mesh) {
+    auto found = meshes_.find(mesh.get());
+    if (found != meshes_.end()) {
+        return found->second.second;
+    }
+    const bool hasNormals = mesh->normals.size() == mesh->positions.size();
+    std::vector<Vertex> vertices(mesh->positions.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        vertices[i] = {mesh->positions[i], hasNormals ? mesh->normals[i] : glm::vec3(0.0f)};
+    }
+    GpuMesh gpu{gl::Buffer::fromSpan<Vertex>(vertices), gl::Buffer::fromSpan<std::uint32_t>(mesh->indices), {},
+                static_cast<GLsizei>(mesh->indices.size()), hasNormals};
+    gpu.vertexArray.setVertexBuffer(0, gpu.vertices, sizeof(Vertex));
+    gpu.vertexArray.setFloatAttribute(0, 0, 3, offsetof(Vertex, position));
+    gpu.vertexArray.setFloatAttribute(1, 0, 3, offsetof(Vertex, normal));
+    gpu.vertexArray.setIndexBuffer(gpu.indices);
+    return meshes_.emplace(mesh.get(), std::pair{mesh, std::move(gpu)}).first->second.second;
+}
+
+void ForwardRenderer::drawMeshes(const Scene& scene, const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
+    scene.forEach([&](EntityId id, const Entity& entity) {
+        if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->indices.empty()) {
+            return;
+        }
+        const glm::mat4 model = scene.worldMatrix(id);
+        if (!beforeDraw(id, model)) {
+            return;
+        }
+        const GpuMesh& gpu = upload(entity.mesh->mesh);
+        gpu.vertexArray.bind();
+        glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+    });
+}
+
+FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Module* const> modules) {
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
+    glViewport(0, 0, frame.target.size.x, frame.target.size.y);
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glClearColor(environment.background.r, environment.background.g, environment.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
+
+    FrameStats stats;
+    const ShaderVariantKey sceneBits = sceneHasSpotLights_ ? spotLightsFlag_ : 0;
+    drawMeshes(frame.scene, [&](EntityId id, const glm::mat4& model) {
+        const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
+        const DrawContext draw{frame, id, mesh, model};
+        ShaderVariantKey key = sceneBits;
+        if (mesh.normals.size() != mesh.positions.size()) {
+            key |= flatNormalsFlag_;
+        }
+        for (const Module* module : modules) {
+            key |= module->variantBits(draw);
+        }
+        const gl::Program& program = programs_.get(kForwardProgram, key);
+        program.use();
+        program.set("uModel", model);
+        program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
+        program.set("uBaseColor", mesh.material.baseColor);
+        program.set("uSpecularColor", mesh.material.specularColor);
+        program.set("uShininess", mesh.material.shininess);
+        for (Module* module : modules) {
+            module->bindLightingResources(program, draw);
+        }
+        ++stats.drawCalls;
+        stats.triangles += mesh.triangleCount();
+        return true;
+    });
+    return stats;
+}
+
+} // namespace engine

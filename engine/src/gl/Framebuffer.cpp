@@ -1,0 +1,45 @@
+#include <engine/Error.h>
+#include <engine/gl/Framebuffer.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace engine::gl {
+
+static GLuint createFramebuffer() {
+    GLuint name = 0;
+    glCreateFramebuffers(1, &name);
+    return name;
+}
+
+Framebuffer::Framebuffer(std::string_view label) : object_(createFramebuffer()), label_(label) {
+    glObjectLabel(GL_FRAMEBUFFER, object_.id(), static_cast<GLsizei>(label_.size()), label_.data());
+}
+
+void Framebuffer::attach(GLenum attachment, const Texture& texture, GLint level) {
+    glNamedFramebufferTexture(object_.id(), attachment, texture.id(), level);
+}
+
+void Framebuffer::setDrawBuffers(std::initializer_list<GLenum> buffers) {
+    if (buffers.size() == 0) {
+        glNamedFramebufferDrawBuffer(object_.id(), GL_NONE);
+        glNamedFramebufferReadBuffer(object_.id(), GL_NONE);
+        return;
+    }
+    std::vector<GLenum> list(buffers);
+    glNamedFramebufferDrawBuffers(object_.id(), static_cast<GLsizei>(list.size()), list.data());
+}
+
+void Framebuffer::check() const {
+    const GLenum status = glCheckNamedFramebufferStatus(object_.id(), GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        char hex[16];
+        std::snprintf(hex, sizeof hex, "0x%04X", status);
+        throw GlError("framebuffer '" + label_ + "' is incomplete (status " + hex + ")");
+    }
+}
+
+void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, object_.id()); }
+
+} // namespace engine::gl
