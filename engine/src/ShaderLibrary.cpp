@@ -66,7 +66,7 @@ private:
         const std::size_t index = fileNames_.size();
         fileNames_.push_back(name);
         if (!isRoot) {
-            out_ += "#line 1 " + std::to_string(index) + "\n";
+            out_ += lineDirective(index, 1);
         }
         std::size_t lineNumber = 0;
         std::size_t position = 0;
@@ -76,7 +76,10 @@ private:
                 position, end == std::string::npos ? std::string::npos : end - position);
             ++lineNumber;
             const std::string where = name + ":" + std::to_string(lineNumber) + ": ";
-            const std::string resume = "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
+            if (lineNumber >= static_cast<std::size_t>(gl::kShaderLinesPerFile)) {
+                throw ShaderError(name + ": more than " + std::to_string(gl::kShaderLinesPerFile - 1) + " lines");
+            }
+            const std::string resume = lineDirective(index, lineNumber + 1);
             if (startsWithDirective(line, "version")) {
                 if (!isRoot || lineNumber != 1) {
                     throw ShaderError(where + "#version must be the first line of the top-level shader");
@@ -112,6 +115,10 @@ private:
         }
     }
 
+    static std::string lineDirective(std::size_t file, std::size_t line) {
+        return "#line " + std::to_string(file * gl::kShaderLinesPerFile + line) + " 0\n";
+    }
+
     void includeFile(const std::string& where, const std::string& includer, std::string_view target) {
         auto found = files_.find(std::string(directoryOf(includer)) + std::string(target));
         if (found == files_.end()) {
@@ -130,7 +137,7 @@ private:
             if (chunk.slot != slot) {
                 continue;
             }
-            out_ += "#line 1 " + std::to_string(fileNames_.size()) + "\n";
+            out_ += lineDirective(fileNames_.size(), 1);
             fileNames_.push_back(chunk.origin);
             out_ += chunk.source;
             out_ += '\n';

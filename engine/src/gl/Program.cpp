@@ -37,22 +37,24 @@ std::string infoLog(GLuint object, bool isProgram) {
 std::string mapShaderLog(std::string_view log, std::span<const std::string> fileNames) {
     // Mesa: "0:12(3): error", NVIDIA: "0(12) : error", AMD/Intel: "ERROR: 0:12: ".
     static const std::regex location(R"((\d+):(\d+)\((\d+)\)|(\d+)\((\d+)\)|(\d+):(\d+):)");
-    auto fileName = [&](const std::string& index) {
-        const auto i = static_cast<std::size_t>(std::stoul(index));
-        return i < fileNames.size() ? fileNames[i] : "source " + index;
+    auto fileAndLine = [&](const std::string& globalLine) {
+        const unsigned long number = std::stoul(globalLine);
+        const unsigned long file = number / kShaderLinesPerFile;
+        const std::string line = std::to_string(number % kShaderLinesPerFile);
+        return (file < fileNames.size() ? fileNames[file] : "source " + std::to_string(file)) + ":" + line;
     };
     std::string out;
-    std::string text(log);
+    const std::string text(log);
     std::smatch match;
     auto begin = text.cbegin();
     while (std::regex_search(begin, text.cend(), match, location)) {
         out.append(begin, match[0].first);
         if (match[1].matched) {
-            out += fileName(match[1]) + ":" + match[2].str() + ":" + match[3].str();
+            out += fileAndLine(match[2]) + ":" + match[3].str();
         } else if (match[4].matched) {
-            out += fileName(match[4]) + ":" + match[5].str();
+            out += fileAndLine(match[5]);
         } else {
-            out += fileName(match[6]) + ":" + match[7].str() + ":";
+            out += fileAndLine(match[7]) + ":";
         }
         begin = match[0].second;
     }

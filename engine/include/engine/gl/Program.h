@@ -16,10 +16,14 @@
 
 namespace engine::gl {
 
-/// @brief Fully preprocessed source of one shader stage.
+/// @brief Line `n` of preprocessed file `i` is numbered `i * kShaderLinesPerFile + n` through `#line`.
 ///
-/// `fileNames[i]` names GLSL source string number `i` as used by `#line <line> <i>` directives, so
-/// driver messages can be mapped back to the file that holds the offending line.
+/// The file is encoded in the line number rather than in `#line`'s source-string number because Mesa
+/// drops the source number on locations of compound expressions (it keeps the line).
+inline constexpr int kShaderLinesPerFile = 100000;
+
+/// @brief Fully preprocessed source of one shader stage; `fileNames[i]` names file `i` of the
+/// numbering above, so driver messages can be mapped back to the file that holds the offending line.
 struct ShaderStageSource {
     GLenum stage = GL_VERTEX_SHADER;
     std::string text;
@@ -53,8 +57,8 @@ private:
     mutable std::unordered_map<std::string, GLint> locations_;
 };
 
-/// @brief Rewrites driver log locations such as `0:12(3)` (Mesa) or `0(12)` (NVIDIA) into
-/// `file.glsl:12:3` / `file.glsl:12` using the `#line` source-string table.
+/// @brief Rewrites driver log locations such as `0:100012(3)` (Mesa), `0(100012)` (NVIDIA) or `0:100012:`
+/// (AMD/Intel) into `file.glsl:12:3` / `file.glsl:12` / `file.glsl:12:` using `fileNames`.
 std::string mapShaderLog(std::string_view log, std::span<const std::string> fileNames);
 
 } // namespace engine::gl

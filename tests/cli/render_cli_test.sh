@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# End-to-end checks of gs-render: a real render, and each bad input's message and exit status.
+set -u
+render=$1
+out=$2
+rm -rf "$out"
+failures=0
+
+expect() { # expect NAME EXPECTED_STATUS MESSAGE_PATTERN -- command...
+    local name=$1 status=$2 pattern=$3
+    shift 4
+    local output
+    output=$("$@" 2>&1)
+    local actual=$?
+    if [[ $actual -ne $status ]] || ! grep -qE -e "$pattern" <<<"$output"; then
+        echo "FAIL $name: status $actual (wanted $status), output:"
+        echo "$output"
+        failures=$((failures + 1))
+    else
+        echo "ok   $name"
+    fi
+}
+
+expect renders 0 "wrote .*default.png" -- "$render" --out "$out" --size 160x120 --frames 2
+[[ -s $out/default.png && -s $out/report.json ]] || { echo "FAIL outputs missing"; failures=$((failures + 1)); }
+grep -q '"timingMethod"' "$out/report.json" || { echo "FAIL report lacks timingMethod"; failures=$((failures + 1)); }
+ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; failures=$((failures + 1)); }
+
+expect unknownOption 2 "unknown option '--bogus'" -- "$render" --bogus
+expect badSize 2 "--size: 'axb' is not WIDTHxHEIGHT|--size: 'a' is not an integer" -- "$render" --size axb
+expect zeroSize 2 "--size: '0' is not an integer in \[1, 16384\]" -- "$render" --size 0x10
+expect unknownScene 2 "unknown scene 'nope'" -- "$render" --scene nope
+expect missingValue 2 "--out needs a value" -- "$render" --out
+expect missingModule 1 "module 'nothere' not found" -- "$render" --out "$out/m" --module nothere
+expect noEglDriver 1 "headless context: .*libegl-mesa0" -- env LIBGL_DRIVERS_PATH=/nonexistent "$render" --out "$out/n"
+[[ -e $out/n ]] && { echo "FAIL output written despite failure"; failures=$((failures + 1)); }
+
+exit $((failures > 0))
