@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the project builds, tests and runs with. Idempotent: installs only what is
+# missing, so a machine that has everything does no network work.
+set -euo pipefail
+
+packages=(
+    cmake ninja-build g++ pkg-config
+    libepoxy-dev libegl1 libegl-mesa0 libgl1-mesa-dri
+    libglfw3-dev libglm-dev libstb-dev
+    libosd-dev libopenmesh-dev libtinygltf-dev libembree-dev
+    libgtest-dev libbenchmark-dev libimgui-dev xvfb
+)
+
+missing=()
+for package in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$package")
+    fi
+done
+
+if ((${#missing[@]} == 0)); then
+    exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+    sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
