@@ -16,7 +16,9 @@ struct Engine::Attached {
     [[nodiscard]] Module& module() const { return owned ? *owned : loaded->module(); }
 };
 
-Engine::Engine() : programs_(shaders_, variants_), renderer_(variants_, programs_) { shaders_.add(gsEngineShaders()); }
+Engine::Engine() : programs_(shaders_, variants_), renderer_(variants_, programs_) {
+    shaders_.add(gsEngineShaders());
+}
 
 Engine::~Engine() {
     while (!attached_.empty()) {
@@ -99,7 +101,8 @@ GLuint Engine::reserveTextureUnit() {
     return nextTextureUnit_++;
 }
 
-void Engine::drawMeshes(const Scene& scene, const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
+void Engine::drawMeshes(const Scene& scene,
+                        const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
     renderer_.drawMeshes(scene, beforeDraw);
 }
 

@@ -52,7 +52,8 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
     frame.frameIndex = frameIndex;
     const glm::mat4 cameraWorld = scene.worldMatrix(camera);
     frame.view = glm::inverse(cameraWorld);
-    const float aspect = target.size.y > 0 ? static_cast<float>(target.size.x) / static_cast<float>(target.size.y) : 1.0f;
+    const float aspect =
+        target.size.y > 0 ? static_cast<float>(target.size.x) / static_cast<float>(target.size.y) : 1.0f;
     frame.projection = cameraEntity.camera->projectionMatrix(aspect);
     frame.viewProjection = frame.projection * frame.view;
     frame.cameraPosition = glm::vec3(cameraWorld[3]);
@@ -82,9 +83,9 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
         sceneHasSpotLights_ = sceneHasSpotLights_ || spot;
         block.lights[light.index] = {
             glm::vec4(light.light.color, light.light.intensity),
-            glm::vec4(light.position, spot ? 1.0f : 0.0f),
-            glm::vec4(light.direction, 0.0f),
-            glm::vec4(std::cos(light.light.innerConeAngle), std::cos(light.light.outerConeAngle), light.light.range, 0.0f)};
+            glm::vec4(light.position, spot ? 1.0f : 0.0f), glm::vec4(light.direction, 0.0f),
+            glm::vec4(std::cos(light.light.innerConeAngle), std::cos(light.light.outerConeAngle),
+                      light.light.range, 0.0f)};
         frame.lights.push_back(light);
     });
     if (skipped > 0) {
@@ -106,8 +107,11 @@ const ForwardRenderer::GpuMesh& ForwardRenderer::upload(const std::shared_ptr<co
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         vertices[i] = {mesh->positions[i], hasNormals ? mesh->normals[i] : glm::vec3(0.0f)};
     }
-    GpuMesh gpu{gl::Buffer::fromSpan<Vertex>(vertices), gl::Buffer::fromSpan<std::uint32_t>(mesh->indices), {},
-                static_cast<GLsizei>(mesh->indices.size()), hasNormals};
+    GpuMesh gpu{gl::Buffer::fromSpan<Vertex>(vertices),
+                gl::Buffer::fromSpan<std::uint32_t>(mesh->indices),
+                {},
+                static_cast<GLsizei>(mesh->indices.size()),
+                hasNormals};
     gpu.vertexArray.setVertexBuffer(0, gpu.vertices, sizeof(Vertex));
     gpu.vertexArray.setFloatAttribute(0, 0, 3, offsetof(Vertex, position));
     gpu.vertexArray.setFloatAttribute(1, 0, 3, offsetof(Vertex, normal));
@@ -115,7 +119,8 @@ const ForwardRenderer::GpuMesh& ForwardRenderer::upload(const std::shared_ptr<co
     return meshes_.emplace(mesh.get(), std::pair{mesh, std::move(gpu)}).first->second.second;
 }
 
-void ForwardRenderer::drawMeshes(const Scene& scene, const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
+void ForwardRenderer::drawMeshes(const Scene& scene,
+                                 const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
     scene.forEach([&](EntityId id, const Entity& entity) {
         if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->indices.empty()) {
             return;

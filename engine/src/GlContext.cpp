@@ -11,8 +11,12 @@ std::string glString(GLenum name) {
 }
 } // namespace
 
-std::string GlContext::renderer() const { return glString(GL_RENDERER); }
-std::string GlContext::version() const { return glString(GL_VERSION); }
+std::string GlContext::renderer() const {
+    return glString(GL_RENDERER);
+}
+std::string GlContext::version() const {
+    return glString(GL_VERSION);
+}
 
 bool GlContext::isSoftwareRenderer() const {
     const std::string name = renderer();

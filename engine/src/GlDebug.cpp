@@ -15,7 +15,8 @@ std::vector<std::string> recordedErrors;
 
 void GLAPIENTRY onDebugMessage(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum severity, GLsizei length,
                                const GLchar* message, const void* /*user*/) {
-    const std::string text(message, length > 0 ? static_cast<std::size_t>(length) : std::char_traits<char>::length(message));
+    const std::string text(message, length > 0 ? static_cast<std::size_t>(length)
+                                               : std::char_traits<char>::length(message));
     if (type == GL_DEBUG_TYPE_ERROR) {
         std::lock_guard lock(errorsMutex);
         recordedErrors.push_back(text);

@@ -16,17 +16,21 @@ std::string eglErrorText() {
     std::snprintf(text, sizeof text, "EGL error 0x%04X", eglGetError());
     return text;
 }
-constexpr const char* kRemedy = " (on Debian install libegl-mesa0 and libgl1-mesa-dri; Mesa's llvmpipe needs no GPU)";
+constexpr const char* kRemedy =
+    " (on Debian install libegl-mesa0 and libgl1-mesa-dri; Mesa's llvmpipe needs no GPU)";
 } // namespace
 
 HeadlessContext::HeadlessContext(const ContextOptions& options) {
     if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-        throw ContextError(std::string("headless context: EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)") +
-                           kRemedy);
+        throw ContextError(
+            std::string("headless context: EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)") +
+            kRemedy);
     }
-    EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay display =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (display == EGL_NO_DISPLAY) {
-        throw ContextError("headless context: no EGL display for the surfaceless platform: " + eglErrorText() + kRemedy);
+        throw ContextError(
+            "headless context: no EGL display for the surfaceless platform: " + eglErrorText() + kRemedy);
     }
     EGLint major = 0;
     EGLint minor = 0;
@@ -52,7 +56,8 @@ HeadlessContext::HeadlessContext(const ContextOptions& options) {
     if (context == EGL_NO_CONTEXT) {
         const std::string error = eglErrorText();
         eglTerminate(display);
-        throw ContextError("headless context: the driver refused an OpenGL 4.5 core context: " + error + kRemedy);
+        throw ContextError("headless context: the driver refused an OpenGL 4.5 core context: " + error +
+                           kRemedy);
     }
     context_ = context;
     makeCurrent();

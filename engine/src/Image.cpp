@@ -44,12 +44,14 @@ void commit(const std::filesystem::path& temporary, const std::filesystem::path&
 
 void writePng(const std::filesystem::path& path, const Image& image) {
     if (image.size.x <= 0 || image.size.y <= 0 ||
-        image.pixels.size() != static_cast<std::size_t>(image.size.x) * static_cast<std::size_t>(image.size.y) * 4) {
+        image.pixels.size() !=
+            static_cast<std::size_t>(image.size.x) * static_cast<std::size_t>(image.size.y) * 4) {
         throw IoError(path.string() + ": image has no pixels or a size that does not match its data");
     }
     prepareParent(path);
     const std::filesystem::path temporary = temporaryBeside(path);
-    if (!stbi_write_png(temporary.c_str(), image.size.x, image.size.y, 4, image.pixels.data(), image.size.x * 4)) {
+    if (!stbi_write_png(temporary.c_str(), image.size.x, image.size.y, 4, image.pixels.data(),
+                        image.size.x * 4)) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
         throw IoError(path.string() + ": cannot write PNG");

@@ -58,11 +58,15 @@ LoadedModule::~LoadedModule() {
     dlclose(library_);
 }
 
-void* LoadedModule::symbol(const char* name) const { return dlsym(library_, name); }
+void* LoadedModule::symbol(const char* name) const {
+    return dlsym(library_, name);
+}
 
 ModuleLoader::ModuleLoader() = default;
 
-void ModuleLoader::addSearchPath(std::filesystem::path folder) { extraPaths_.push_back(std::move(folder)); }
+void ModuleLoader::addSearchPath(std::filesystem::path folder) {
+    extraPaths_.push_back(std::move(folder));
+}
 
 std::string ModuleLoader::fileNameFor(std::string_view moduleName) {
     return "libgs_module_" + std::string(moduleName) + ".so";
@@ -114,8 +118,9 @@ std::unique_ptr<LoadedModule> ModuleLoader::load(std::string_view name) const {
     const ModuleDescriptor* descriptor = entry ? entry() : nullptr;
     if (!descriptor) {
         dlclose(library);
-        throw ModuleError(quoted + " (" + found.string() +
-                          ") is not an engine module: it exports no gsModuleDescriptor (use GS_EXPORT_MODULE)");
+        throw ModuleError(
+            quoted + " (" + found.string() +
+            ") is not an engine module: it exports no gsModuleDescriptor (use GS_EXPORT_MODULE)");
     }
     if (const std::string reason = checkModuleDescriptor(*descriptor, name); !reason.empty()) {
         dlclose(library);

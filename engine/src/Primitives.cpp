@@ -16,7 +16,8 @@ MeshData cube(float size) {
         const glm::vec3 u = std::abs(n.y) > 0.5f ? glm::vec3(n.y, 0, 0) : glm::vec3(-n.z, 0, n.x);
         const glm::vec3 v = glm::cross(n, u);
         const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-        for (const glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+        for (const glm::vec2 corner :
+             {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
             mesh.positions.push_back(h * (n + corner.x * u + corner.y * v));
             mesh.normals.push_back(n);
         }
@@ -59,7 +60,8 @@ MeshData sphere(float radius, int rings, int segments) {
         const float theta = glm::pi<float>() * static_cast<float>(r) / static_cast<float>(rings);
         for (int s = 0; s <= segments; ++s) {
             const float phi = glm::two_pi<float>() * static_cast<float>(s) / static_cast<float>(segments);
-            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                              std::sin(theta) * std::sin(phi));
             mesh.positions.push_back(radius * n);
             mesh.normals.push_back(n);
         }

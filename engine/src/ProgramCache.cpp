@@ -28,6 +28,8 @@ void ProgramCache::setChunks(std::vector<ShaderChunk> chunks) {
     clear();
 }
 
-void ProgramCache::clear() { programs_.clear(); }
+void ProgramCache::clear() {
+    programs_.clear();
+}
 
 } // namespace engine

@@ -5,7 +5,8 @@
 namespace engine {
 
 RenderTarget::RenderTarget(glm::ivec2 size)
-    : size_(size), color_(GL_SRGB8_ALPHA8, size), depth_(GL_DEPTH_COMPONENT24, size), framebuffer_("render target") {
+    : size_(size), color_(GL_SRGB8_ALPHA8, size), depth_(GL_DEPTH_COMPONENT24, size),
+      framebuffer_("render target") {
     framebuffer_.attach(GL_COLOR_ATTACHMENT0, color_);
     framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
     framebuffer_.setDrawBuffers({GL_COLOR_ATTACHMENT0});

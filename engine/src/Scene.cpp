@@ -32,8 +32,8 @@ void Scene::setParent(EntityId child, EntityId parent) {
     for (EntityId ancestor = parent; ancestor != kNoEntity; ancestor = entities_[ancestor].parent) {
         checkId(ancestor);
         if (ancestor == child) {
-            throw Error("scene: making '" + entities_[child].name + "' a child of '" + entities_[parent].name +
-                        "' would create a cycle");
+            throw Error("scene: making '" + entities_[child].name + "' a child of '" +
+                        entities_[parent].name + "' would create a cycle");
         }
     }
     Entity& entity = entities_[child];
@@ -50,7 +50,8 @@ void Scene::setParent(EntityId child, EntityId parent) {
 glm::mat4 Scene::worldMatrix(EntityId id) const {
     checkId(id);
     glm::mat4 matrix = entities_[id].transform.matrix();
-    for (EntityId ancestor = entities_[id].parent; ancestor != kNoEntity; ancestor = entities_[ancestor].parent) {
+    for (EntityId ancestor = entities_[id].parent; ancestor != kNoEntity;
+         ancestor = entities_[ancestor].parent) {
         matrix = entities_[ancestor].transform.matrix() * matrix;
     }
     return matrix;

@@ -20,8 +20,8 @@ bool startsWithDirective(std::string_view line, std::string_view directive) {
     }
     line = trimLeft(line.substr(1));
     return line.starts_with(directive) &&
-           (line.size() == directive.size() || line[directive.size()] == ' ' || line[directive.size()] == '\t' ||
-            line[directive.size()] == '(' || line[directive.size()] == '"');
+           (line.size() == directive.size() || line[directive.size()] == ' ' ||
+            line[directive.size()] == '\t' || line[directive.size()] == '(' || line[directive.size()] == '"');
 }
 
 std::string_view directoryOf(std::string_view path) {
@@ -44,8 +44,8 @@ std::optional<std::string_view> between(std::string_view line, char open, char c
 
 class Preprocessor {
 public:
-    Preprocessor(const std::map<std::string, std::string, std::less<>>& files, std::span<const std::string> defines,
-                 std::span<const ShaderChunk> chunks)
+    Preprocessor(const std::map<std::string, std::string, std::less<>>& files,
+                 std::span<const std::string> defines, std::span<const ShaderChunk> chunks)
         : files_(files), defines_(defines), chunks_(chunks) {}
 
     gl::ShaderStageSource run(GLenum stage, std::string_view name) {
@@ -77,7 +77,8 @@ private:
             ++lineNumber;
             const std::string where = name + ":" + std::to_string(lineNumber) + ": ";
             if (lineNumber >= static_cast<std::size_t>(gl::kShaderLinesPerFile)) {
-                throw ShaderError(name + ": more than " + std::to_string(gl::kShaderLinesPerFile - 1) + " lines");
+                throw ShaderError(name + ": more than " + std::to_string(gl::kShaderLinesPerFile - 1) +
+                                  " lines");
             }
             const std::string resume = lineDirective(index, lineNumber + 1);
             if (startsWithDirective(line, "version")) {
@@ -97,7 +98,8 @@ private:
                 }
                 includeFile(where, name, *target);
                 out_ += resume;
-            } else if (startsWithDirective(line, "pragma") && trimLeft(line).find("gs_slot") != std::string_view::npos) {
+            } else if (startsWithDirective(line, "pragma") &&
+                       trimLeft(line).find("gs_slot") != std::string_view::npos) {
                 const auto slot = between(line, '(', ')');
                 if (!slot || slot->empty()) {
                     throw ShaderError(where + "malformed slot (expected #pragma gs_slot(name))");
@@ -161,9 +163,13 @@ void ShaderLibrary::add(std::span<const EmbeddedShaderFile> files) {
     }
 }
 
-void ShaderLibrary::add(std::string name, std::string source) { files_[std::move(name)] = std::move(source); }
+void ShaderLibrary::add(std::string name, std::string source) {
+    files_[std::move(name)] = std::move(source);
+}
 
-bool ShaderLibrary::contains(std::string_view name) const { return files_.find(name) != files_.end(); }
+bool ShaderLibrary::contains(std::string_view name) const {
+    return files_.find(name) != files_.end();
+}
 
 gl::ShaderStageSource ShaderLibrary::preprocess(GLenum stage, std::string_view name,
                                                 std::span<const std::string> defines,

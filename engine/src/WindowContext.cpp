@@ -47,8 +47,12 @@ WindowContext::~WindowContext() {
     glfwTerminate();
 }
 
-void WindowContext::makeCurrent() { glfwMakeContextCurrent(window_); }
-void WindowContext::swapBuffers() { glfwSwapBuffers(window_); }
+void WindowContext::makeCurrent() {
+    glfwMakeContextCurrent(window_);
+}
+void WindowContext::swapBuffers() {
+    glfwSwapBuffers(window_);
+}
 
 glm::ivec2 WindowContext::framebufferSize() const {
     glm::ivec2 size{0};

@@ -13,8 +13,8 @@ using namespace engine;
 namespace {
 
 constexpr glm::ivec2 kSize{32, 32};
-const std::vector<std::string> kOneFrame{"prepareFrame:1 lights", "renderPrePasses", "bindLightingResources:cube",
-                                         "debugDraw"};
+const std::vector<std::string> kOneFrame{"prepareFrame:1 lights", "renderPrePasses",
+                                         "bindLightingResources:cube", "debugDraw"};
 
 int centreRed(Engine& engine, const LitCubeScene& fixture) {
     RenderTarget target(kSize);

@@ -11,7 +11,8 @@
 /// @brief Linear → sRGB byte, the encoding GL_FRAMEBUFFER_SRGB applies (IEC 61966-2-1).
 inline int srgbByte(float linear) {
     linear = glm::clamp(linear, 0.0f, 1.0f);
-    const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    const float encoded =
+        linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
     return static_cast<int>(std::lround(encoded * 255.0f));
 }
 

@@ -17,20 +17,26 @@ std::string loadError(std::string_view name) {
     return "(loaded without error)";
 }
 
-bool contains(const std::string& text, const std::string& needle) { return text.find(needle) != std::string::npos; }
+bool contains(const std::string& text, const std::string& needle) {
+    return text.find(needle) != std::string::npos;
+}
 
 ModuleDescriptor validDescriptor() {
-    return {kModuleAbiVersion, GS_MODULE_BUILD_TAG, "probe", []() -> Module* { return nullptr; }, [](Module*) {}};
+    return {kModuleAbiVersion, GS_MODULE_BUILD_TAG, "probe", []() -> Module* { return nullptr; },
+            [](Module*) {}};
 }
 
 } // namespace
 
-TEST(ModuleDescriptorTest, AcceptsMatchingDescriptor) { EXPECT_EQ(checkModuleDescriptor(validDescriptor(), "probe"), ""); }
+TEST(ModuleDescriptorTest, AcceptsMatchingDescriptor) {
+    EXPECT_EQ(checkModuleDescriptor(validDescriptor(), "probe"), "");
+}
 
 TEST(ModuleDescriptorTest, ExplainsEachMismatch) {
     ModuleDescriptor descriptor = validDescriptor();
     descriptor.abiVersion = kModuleAbiVersion + 3;
-    EXPECT_TRUE(contains(checkModuleDescriptor(descriptor, "probe"), "ABI version " + std::to_string(kModuleAbiVersion + 3)));
+    EXPECT_TRUE(contains(checkModuleDescriptor(descriptor, "probe"),
+                         "ABI version " + std::to_string(kModuleAbiVersion + 3)));
 
     descriptor = validDescriptor();
     descriptor.buildTag = "msvc-19";

@@ -17,7 +17,8 @@ constexpr glm::vec3 kBase{0.5f, 0.25f, 0.125f};
 void expectPixel(const Image& image, glm::ivec2 at, glm::vec3 linear, int tolerance = 1) {
     const glm::u8vec4 pixel = image.at(at.x, at.y);
     for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(pixel[c], srgbByte(linear[c]), tolerance) << "channel " << c << " at " << at.x << "," << at.y;
+        EXPECT_NEAR(pixel[c], srgbByte(linear[c]), tolerance)
+            << "channel " << c << " at " << at.x << "," << at.y;
     }
 }
 

@@ -12,7 +12,9 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolera
     EXPECT_NEAR(actual.y, expected.y, tolerance);
     EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
-glm::vec3 transformPoint(const glm::mat4& m, const glm::vec3& p) { return glm::vec3(m * glm::vec4(p, 1.0f)); }
+glm::vec3 transformPoint(const glm::mat4& m, const glm::vec3& p) {
+    return glm::vec3(m * glm::vec4(p, 1.0f));
+}
 } // namespace
 
 TEST(SceneTest, WorldMatrixComposesParentThenChild) {
@@ -49,7 +51,8 @@ TEST(SceneTest, UnknownIdsAreClearErrors) {
         (void)scene.entity(7);
         FAIL() << "expected an error";
     } catch (const Error& error) {
-        EXPECT_NE(std::string(error.what()).find("entity id 7 does not exist"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("entity id 7 does not exist"), std::string::npos)
+            << error.what();
     }
     EXPECT_THROW(scene.create("orphan", 42), Error);
 }
@@ -85,7 +88,8 @@ TEST_P(TransformLookAtTest, MinusZPointsAtTargetAndBasisIsOrthonormal) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, TransformLookAtTest,
                          testing::Values(LookAtCase{"oblique", {1, 2, 3}, {0, 0, 0}},
-                                         LookAtCase{"straightDown", {0, 5, 0}, {0, 0, 0}}, // up parallel to view
+                                         LookAtCase{
+                                             "straightDown", {0, 5, 0}, {0, 0, 0}}, // up parallel to view
                                          LookAtCase{"straightUp", {0, -5, 0}, {0, 0, 0}},
                                          LookAtCase{"alongZ", {0, 0, 5}, {0, 0, 0}}),
                          [](const auto& test) { return std::string(test.param.name); });

@@ -22,7 +22,9 @@ std::string compileError(Engine& engine, const ProgramDesc& desc) {
     return "(compiled)";
 }
 
-bool contains(const std::string& text, const std::string& needle) { return text.find(needle) != std::string::npos; }
+bool contains(const std::string& text, const std::string& needle) {
+    return text.find(needle) != std::string::npos;
+}
 
 } // namespace
 
@@ -31,7 +33,8 @@ TEST(ShaderGLTest, CompileErrorNamesTheIncludedFileAndLine) {
     Engine engine;
     engine.shaders().add("test/broken.frag", "#version 450 core\n#include \"helpers.glsl\"\nout vec4 c;\n"
                                              "void main() { c = vec4(helper()); }\n");
-    engine.shaders().add("test/helpers.glsl", "float helper() {\n  float x = 1.0;\n  return undefinedThing;\n}\n");
+    engine.shaders().add("test/helpers.glsl",
+                         "float helper() {\n  float x = 1.0;\n  return undefinedThing;\n}\n");
     const std::string message = compileError(engine, {"forward.vert", "test/broken.frag"});
     EXPECT_TRUE(contains(message, "test/helpers.glsl:3")) << message;
     EXPECT_TRUE(contains(message, "fragment shader failed to compile")) << message;
@@ -41,8 +44,9 @@ TEST(ShaderGLTest, CompileErrorNamesTheIncludedFileAndLine) {
 TEST(ShaderGLTest, ErrorInTopLevelFileAfterIncludeKeepsItsLineNumber) {
     glTestContext();
     Engine engine;
-    engine.shaders().add("test/late.frag",
-                         "#version 450 core\n#include \"frame.glsl\"\nout vec4 c;\nvoid main() {\n  c = nope;\n}\n");
+    engine.shaders().add(
+        "test/late.frag",
+        "#version 450 core\n#include \"frame.glsl\"\nout vec4 c;\nvoid main() {\n  c = nope;\n}\n");
     const std::string message = compileError(engine, {"forward.vert", "test/late.frag"});
     EXPECT_TRUE(contains(message, "test/late.frag:5")) << message;
 }
@@ -50,7 +54,8 @@ TEST(ShaderGLTest, ErrorInTopLevelFileAfterIncludeKeepsItsLineNumber) {
 TEST(ShaderGLTest, MissingIncludeIsReportedBeforeCompiling) {
     glTestContext();
     Engine engine;
-    engine.shaders().add("test/missing.frag", "#version 450 core\n#include \"absent.glsl\"\nvoid main() {}\n");
+    engine.shaders().add("test/missing.frag",
+                         "#version 450 core\n#include \"absent.glsl\"\nvoid main() {}\n");
     const std::string message = compileError(engine, {"forward.vert", "test/missing.frag"});
     EXPECT_TRUE(contains(message, "test/missing.frag:2: cannot find include \"absent.glsl\"")) << message;
     EXPECT_EQ(engine.programs().compileCount(), 0u);
@@ -66,7 +71,8 @@ TEST(ShaderGLTest, ModuleChunkErrorNamesTheChunk) {
 
 TEST(ImageGLTest, PngRoundTripsAndLeavesNoTemporaryFile) {
     glTestContext();
-    const auto folder = std::filesystem::temp_directory_path() / ("gs_png_test_" + std::to_string(::getpid()));
+    const auto folder =
+        std::filesystem::temp_directory_path() / ("gs_png_test_" + std::to_string(::getpid()));
     std::filesystem::remove_all(folder);
     Image image;
     image.size = {3, 2};

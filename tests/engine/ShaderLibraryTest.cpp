@@ -99,28 +99,32 @@ TEST_P(ShaderLibraryErrorTest, NamesFileAndLine) {
     ShaderLibrary library;
     library.add("main.frag", GetParam().mainSource);
     library.add("inc.glsl", "float ok;\n#include \"nowhere.glsl\"\n");
-    const std::string message = errorOf([&] { (void)library.preprocess(GL_FRAGMENT_SHADER, "main.frag", {}); });
+    const std::string message =
+        errorOf([&] { (void)library.preprocess(GL_FRAGMENT_SHADER, "main.frag", {}); });
     EXPECT_NE(message.find(GetParam().expectedMessage), std::string::npos) << message;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, ShaderLibraryErrorTest,
-    testing::Values(
-        BadSourceCase{"missingInclude", "#version 450 core\n\n#include \"missing.glsl\"\n",
-                      "main.frag:3: cannot find include \"missing.glsl\""},
-        BadSourceCase{"missingNestedInclude", "#version 450 core\n#include \"inc.glsl\"\n",
-                      "inc.glsl:2: cannot find include \"nowhere.glsl\""},
-        BadSourceCase{"malformedInclude", "#version 450 core\n#include <angle.glsl>\n",
-                      "main.frag:2: malformed #include"},
-        BadSourceCase{"noVersion", "float x;\n", "main.frag:1: the first line must be a #version directive"},
-        BadSourceCase{"lateVersion", "float x;\n#version 450 core\n", "main.frag:2: #version must be the first"},
-        BadSourceCase{"malformedSlot", "#version 450 core\n#pragma gs_slot\n", "main.frag:2: malformed slot"}),
+    testing::Values(BadSourceCase{"missingInclude", "#version 450 core\n\n#include \"missing.glsl\"\n",
+                                  "main.frag:3: cannot find include \"missing.glsl\""},
+                    BadSourceCase{"missingNestedInclude", "#version 450 core\n#include \"inc.glsl\"\n",
+                                  "inc.glsl:2: cannot find include \"nowhere.glsl\""},
+                    BadSourceCase{"malformedInclude", "#version 450 core\n#include <angle.glsl>\n",
+                                  "main.frag:2: malformed #include"},
+                    BadSourceCase{"noVersion", "float x;\n",
+                                  "main.frag:1: the first line must be a #version directive"},
+                    BadSourceCase{"lateVersion", "float x;\n#version 450 core\n",
+                                  "main.frag:2: #version must be the first"},
+                    BadSourceCase{"malformedSlot", "#version 450 core\n#pragma gs_slot\n",
+                                  "main.frag:2: malformed slot"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(ShaderLibraryTest, UnknownShaderIsAnError) {
     ShaderLibrary library;
-    EXPECT_NE(errorOf([&] { (void)library.preprocess(GL_VERTEX_SHADER, "nope.vert", {}); }).find("'nope.vert'"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf([&] { (void)library.preprocess(GL_VERTEX_SHADER, "nope.vert", {}); }).find("'nope.vert'"),
+        std::string::npos);
 }
 
 struct LogCase {
@@ -143,5 +147,6 @@ INSTANTIATE_TEST_SUITE_P(Drivers, ShaderLogMappingTest,
                                                  "main.frag:7 : error C1008: undefined variable"},
                                          LogCase{"amd", "ERROR: 0:100005: 'x' : undeclared identifier",
                                                  "ERROR: lighting.glsl:5: 'x' : undeclared identifier"},
-                                         LogCase{"unknownFile", "0:900001(1): error: y", "source 9:1:1: error: y"}),
+                                         LogCase{"unknownFile", "0:900001(1): error: y",
+                                                 "source 9:1:1: error: y"}),
                          [](const auto& test) { return std::string(test.param.name); });

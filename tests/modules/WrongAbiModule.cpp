@@ -8,8 +8,9 @@ public:
 } // namespace
 
 extern "C" __attribute__((visibility("default"))) const engine::ModuleDescriptor* gsModuleDescriptor() {
-    static const engine::ModuleDescriptor descriptor{
-        engine::kModuleAbiVersion + 1, GS_MODULE_BUILD_TAG, "wrong_abi",
-        []() -> engine::Module* { return new WrongAbiModule(); }, [](engine::Module* module) { delete module; }};
+    static const engine::ModuleDescriptor descriptor{engine::kModuleAbiVersion + 1, GS_MODULE_BUILD_TAG,
+                                                     "wrong_abi",
+                                                     []() -> engine::Module* { return new WrongAbiModule(); },
+                                                     [](engine::Module* module) { delete module; }};
     return &descriptor;
 }

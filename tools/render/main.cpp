@@ -78,7 +78,7 @@ Options parse(int argc, char** argv) {
                 usageError("--size: '" + text + "' is not WIDTHxHEIGHT");
             }
             options.size = {parseInt("--size", text.substr(0, x), 1, 16384),
-                             parseInt("--size", text.substr(x + 1), 1, 16384)};
+                            parseInt("--size", text.substr(x + 1), 1, 16384)};
         } else if (arg == "--frames") {
             options.frames = parseInt("--frames", value(), 1, 1000);
         } else if (arg == "--module") {
@@ -120,7 +120,8 @@ int main(int argc, char** argv) {
         const auto camera = scene.firstCamera();
         engine::RenderTarget target(options.size);
 
-        engine::FrameStats stats = engine.renderFrame(scene, *camera, target); // warm-up: uploads and compiles
+        engine::FrameStats stats =
+            engine.renderFrame(scene, *camera, target); // warm-up: uploads and compiles
         glFinish();
         std::vector<double> milliseconds;
         for (int frame = 0; frame < options.frames; ++frame) {
@@ -158,8 +159,9 @@ int main(int argc, char** argv) {
         }
         report << "]\n}\n";
         engine::writeTextFile(options.outFolder / "report.json", report.str());
-        std::cout << "wrote " << image.string() << " and " << (options.outFolder / "report.json").string() << " ("
-                  << context.renderer() << ", median frame " << median << " ms by glFinish + steady clock)\n";
+        std::cout << "wrote " << image.string() << " and " << (options.outFolder / "report.json").string()
+                  << " (" << context.renderer() << ", median frame " << median
+                  << " ms by glFinish + steady clock)\n";
         return 0;
     } catch (const engine::Error& error) {
         std::cerr << "gs-render: " << error.what() << "\n";

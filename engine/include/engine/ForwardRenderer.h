@@ -40,7 +40,8 @@ public:
 
     /// @brief Computes camera matrices and the light list, uploads the frame uniform block.
     /// Throws Error when `camera` has no camera component.
-    FrameContext beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target, std::uint64_t frameIndex);
+    FrameContext beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
+                            std::uint64_t frameIndex);
 
     /// @brief Draws every mesh of `scene` with the currently bound program (see ModuleHost::drawMeshes).
     void drawMeshes(const Scene& scene, const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw);

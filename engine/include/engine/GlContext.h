@@ -26,7 +26,8 @@ public:
     [[nodiscard]] std::string renderer() const;
     /// @brief GL_VERSION string.
     [[nodiscard]] std::string version() const;
-    /// @brief True for CPU rasterisers (llvmpipe, softpipe, swrast), whose timer queries time submission only.
+    /// @brief True for CPU rasterisers (llvmpipe, softpipe, swrast), whose timer queries time submission
+    /// only.
     [[nodiscard]] bool isSoftwareRenderer() const;
 };
 

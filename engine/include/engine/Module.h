@@ -21,7 +21,7 @@ inline constexpr std::uint32_t kModuleAbiVersion = 1;
 
 /// @brief Identifies the compiler and C++ library ABI; a module built with another one is refused,
 /// because C++ classes cross the module boundary.
-#define GS_MODULE_BUILD_TAG                                                                                          \
+#define GS_MODULE_BUILD_TAG                                                                                  \
     "gcc-abi-" GS_STRINGIFY(__GXX_ABI_VERSION) "-cxx11abi-" GS_STRINGIFY(_GLIBCXX_USE_CXX11_ABI)
 #define GS_STRINGIFY_IMPL(x) #x
 #define GS_STRINGIFY(x) GS_STRINGIFY_IMPL(x)
@@ -79,10 +79,11 @@ struct ModuleDescriptor {
 } // namespace engine
 
 /// @brief Exports `ModuleClass` from a module shared library under `moduleName`.
-#define GS_EXPORT_MODULE(moduleName, ModuleClass)                                                                    \
-    extern "C" __attribute__((visibility("default"))) const engine::ModuleDescriptor* gsModuleDescriptor() {        \
-        static const engine::ModuleDescriptor descriptor{                                                            \
-            engine::kModuleAbiVersion, GS_MODULE_BUILD_TAG, moduleName,                                              \
-            []() -> engine::Module* { return new ModuleClass(); }, [](engine::Module* module) { delete module; }}; \
-        return &descriptor;                                                                                          \
+#define GS_EXPORT_MODULE(moduleName, ModuleClass)                                                            \
+    extern "C" __attribute__((visibility("default"))) const engine::ModuleDescriptor* gsModuleDescriptor() { \
+        static const engine::ModuleDescriptor descriptor{                                                    \
+            engine::kModuleAbiVersion, GS_MODULE_BUILD_TAG, moduleName,                                      \
+            []() -> engine::Module* { return new ModuleClass(); },                                           \
+            [](engine::Module* module) { delete module; }};                                                  \
+        return &descriptor;                                                                                  \
     }

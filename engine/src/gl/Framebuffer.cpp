@@ -40,6 +40,8 @@ void Framebuffer::check() const {
     }
 }
 
-void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, object_.id()); }
+void Framebuffer::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER, object_.id());
+}
 
 } // namespace engine::gl

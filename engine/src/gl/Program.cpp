@@ -12,17 +12,23 @@ namespace {
 
 std::string stageName(GLenum stage) {
     switch (stage) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_GEOMETRY_SHADER: return "geometry";
-    case GL_COMPUTE_SHADER: return "compute";
-    default: return "shader";
+    case GL_VERTEX_SHADER:
+        return "vertex";
+    case GL_FRAGMENT_SHADER:
+        return "fragment";
+    case GL_GEOMETRY_SHADER:
+        return "geometry";
+    case GL_COMPUTE_SHADER:
+        return "compute";
+    default:
+        return "shader";
     }
 }
 
 std::string infoLog(GLuint object, bool isProgram) {
     GLint length = 0;
-    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+              : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(static_cast<std::size_t>(length > 0 ? length : 0), '\0');
     if (length > 0) {
         isProgram ? glGetProgramInfoLog(object, length, nullptr, log.data())
@@ -74,7 +80,8 @@ Program::Program(std::string_view label, std::span<const ShaderStageSource> stag
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
         if (ok != GL_TRUE) {
-            throw ShaderError("program '" + label_ + "': " + stageName(stage.stage) + " shader failed to compile:\n" +
+            throw ShaderError("program '" + label_ + "': " + stageName(stage.stage) +
+                              " shader failed to compile:\n" +
                               mapShaderLog(infoLog(shader.id(), false), stage.fileNames));
         }
         glAttachShader(object_.id(), shader.id());
@@ -91,7 +98,9 @@ Program::Program(std::string_view label, std::span<const ShaderStageSource> stag
     }
 }
 
-void Program::use() const { glUseProgram(object_.id()); }
+void Program::use() const {
+    glUseProgram(object_.id());
+}
 
 GLint Program::uniformLocation(std::string_view name) const {
     auto found = locations_.find(std::string(name));
@@ -104,7 +113,9 @@ GLint Program::uniformLocation(std::string_view name) const {
     return location;
 }
 
-void Program::set(std::string_view name, int value) const { glProgramUniform1i(id(), uniformLocation(name), value); }
+void Program::set(std::string_view name, int value) const {
+    glProgramUniform1i(id(), uniformLocation(name), value);
+}
 void Program::set(std::string_view name, float value) const {
     glProgramUniform1f(id(), uniformLocation(name), value);
 }

@@ -21,6 +21,8 @@ void Texture::setFilter(GLenum minFilter, GLenum magFilter) {
     glTextureParameteri(object_.id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
 }
 
-void Texture::bind(GLuint unit) const { glBindTextureUnit(unit, object_.id()); }
+void Texture::bind(GLuint unit) const {
+    glBindTextureUnit(unit, object_.id());
+}
 
 } // namespace engine::gl

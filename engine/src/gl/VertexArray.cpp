@@ -20,8 +20,12 @@ void VertexArray::setFloatAttribute(GLuint location, GLuint binding, GLint compo
     glVertexArrayAttribBinding(object_.id(), location, binding);
 }
 
-void VertexArray::setIndexBuffer(const Buffer& buffer) { glVertexArrayElementBuffer(object_.id(), buffer.id()); }
+void VertexArray::setIndexBuffer(const Buffer& buffer) {
+    glVertexArrayElementBuffer(object_.id(), buffer.id());
+}
 
-void VertexArray::bind() const { glBindVertexArray(object_.id()); }
+void VertexArray::bind() const {
+    glBindVertexArray(object_.id());
+}
 
 } // namespace engine::gl

@@ -38,13 +38,27 @@ private:
 };
 
 namespace detail {
-inline void deleteBuffer(GLuint n) { glDeleteBuffers(1, &n); }
-inline void deleteTexture(GLuint n) { glDeleteTextures(1, &n); }
-inline void deleteFramebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
-inline void deleteVertexArray(GLuint n) { glDeleteVertexArrays(1, &n); }
-inline void deleteProgram(GLuint n) { glDeleteProgram(n); }
-inline void deleteShader(GLuint n) { glDeleteShader(n); }
-inline void deleteSampler(GLuint n) { glDeleteSamplers(1, &n); }
+inline void deleteBuffer(GLuint n) {
+    glDeleteBuffers(1, &n);
+}
+inline void deleteTexture(GLuint n) {
+    glDeleteTextures(1, &n);
+}
+inline void deleteFramebuffer(GLuint n) {
+    glDeleteFramebuffers(1, &n);
+}
+inline void deleteVertexArray(GLuint n) {
+    glDeleteVertexArrays(1, &n);
+}
+inline void deleteProgram(GLuint n) {
+    glDeleteProgram(n);
+}
+inline void deleteShader(GLuint n) {
+    glDeleteShader(n);
+}
+inline void deleteSampler(GLuint n) {
+    glDeleteSamplers(1, &n);
+}
 } // namespace detail
 
 } // namespace engine::gl
