@@ -2,6 +2,7 @@
 
 #include <engine/Engine.h>
 #include <engine/Error.h>
+#include <engine/GlDebug.h>
 #include <engine/Image.h>
 
 #include <gtest/gtest.h>
@@ -106,4 +107,19 @@ TEST(ImageGLTest, UnwritablePathIsAnIoErrorNamingIt) {
     }
     image.pixels.pop_back();
     EXPECT_THROW(writePng("/tmp/never.png", image), IoError);
+}
+
+TEST(GlDebugGLTest, GlErrorsSurfaceAsExceptionsNamingWhere) {
+    glTestContext();
+    GlDebug::takeErrors();
+    glEnable(0xFFFF); // GL_INVALID_ENUM
+    try {
+        GlDebug::check("deliberate misuse");
+        FAIL() << "expected GlError";
+    } catch (const GlError& error) {
+        EXPECT_NE(std::string(error.what()).find("deliberate misuse: OpenGL reported 1 error"),
+                  std::string::npos)
+            << error.what();
+    }
+    EXPECT_NO_THROW(GlDebug::check("after"));
 }
