@@ -21,15 +21,15 @@ expect() { # expect NAME EXPECTED_STATUS MESSAGE_PATTERN -- command...
     fi
 }
 
-expect renders 0 "wrote .*default.png" -- "$render" --out "$out" --size 160x120 --frames 2
-[[ -s $out/default.png && -s $out/report.json ]] || { echo "FAIL outputs missing"; failures=$((failures + 1)); }
+expect renders 0 "wrote .*knob.png" -- "$render" --out "$out" --size 160x120 --frames 2
+[[ -s $out/knob.png && -s $out/report.json ]] || { echo "FAIL outputs missing"; failures=$((failures + 1)); }
 grep -q '"timingMethod"' "$out/report.json" || { echo "FAIL report lacks timingMethod"; failures=$((failures + 1)); }
 ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; failures=$((failures + 1)); }
 
 expect unknownOption 2 "unknown option '--bogus'" -- "$render" --bogus
 expect badSize 2 "--size: 'axb' is not WIDTHxHEIGHT|--size: 'a' is not an integer" -- "$render" --size axb
 expect zeroSize 2 "--size: '0' is not an integer in \[1, 16384\]" -- "$render" --size 0x10
-expect unknownScene 2 "unknown scene 'nope'" -- "$render" --scene nope
+expect unknownScene 1 "scenes/nope.gltf: file not found" -- "$render" --scene nope
 expect missingValue 2 "--out needs a value" -- "$render" --out
 expect missingModule 1 "module 'nothere' not found" -- "$render" --out "$out/m" --module nothere
 expect noEglDriver 1 "headless context: .*libegl-mesa0" -- env LIBGL_DRIVERS_PATH=/nonexistent "$render" --out "$out/n"

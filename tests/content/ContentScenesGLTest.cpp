@@ -1,0 +1,97 @@
+// Every scene under content/scenes loads, refines its subdivision surfaces and renders headless.
+#include "../engine/GLTestContext.h"
+
+#include <content/GltfLoader.h>
+
+#include <engine/Engine.h>
+#include <engine/RenderTarget.h>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(CONTENT_DIR) / "scenes";
+
+struct SceneCase {
+    const char* name;
+    std::size_t subdivided; // entities whose mesh is a subdivision surface
+};
+
+const SceneCase kScenesExpected[] = {{"knob", 1},       {"torus", 1},       {"bowl", 1},
+                                     {"thin-shell", 2}, {"crease-cube", 1}, {"grazing-plane", 2},
+                                     {"spheres", 16}};
+
+class ContentScenesGLTest : public testing::TestWithParam<SceneCase> {};
+
+} // namespace
+
+TEST(ContentScenesTest, EverySceneFileIsCovered) {
+    std::size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+        files += entry.path().extension() == ".gltf";
+    }
+    EXPECT_EQ(files, std::size(kScenesExpected));
+}
+
+TEST_P(ContentScenesGLTest, LoadsWithCameraShadowCastingLightAndSmoothNormals) {
+    const content::LoadedScene loaded =
+        content::GltfLoader::load(kScenes / (std::string(GetParam().name) + ".gltf"));
+    EXPECT_TRUE(loaded.warnings.empty());
+    ASSERT_TRUE(loaded.scene.firstCamera());
+    std::size_t castingLights = 0;
+    loaded.scene.forEach([&](engine::EntityId, const engine::Entity& e) {
+        castingLights += e.light && e.light->castsShadows;
+    });
+    EXPECT_GE(castingLights, 1u);
+    ASSERT_EQ(loaded.subdivided.size(), GetParam().subdivided);
+    for (const auto& [entity, tag] : loaded.subdivided) {
+        const engine::MeshData& mesh = *loaded.scene.entity(entity).mesh->mesh;
+        ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+        // Smooth, not faceted: vertices are shared between triangles (one normal each, unit length), and on
+        // average a corner's limit normal stays close to its triangle's own normal.
+        EXPECT_LT(mesh.positions.size(), mesh.indices.size() / 2) << mesh.name;
+        double dotSum = 0.0;
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const glm::vec3 a = mesh.positions[mesh.indices[t]];
+            const glm::vec3 face = glm::normalize(
+                glm::cross(mesh.positions[mesh.indices[t + 1]] - a, mesh.positions[mesh.indices[t + 2]] - a));
+            for (int corner = 0; corner < 3; ++corner) {
+                const glm::vec3 normal = mesh.normals[mesh.indices[t + corner]];
+                EXPECT_NEAR(glm::length(normal), 1.0f, 1e-4f);
+                dotSum += glm::dot(face, normal);
+            }
+        }
+        EXPECT_GT(dotSum / static_cast<double>(mesh.indices.size()), std::cos(glm::radians(12.0)))
+            << mesh.name;
+    }
+}
+
+TEST_P(ContentScenesGLTest, RendersTheSceneNotJustTheBackground) {
+    glTestContext();
+    const content::LoadedScene loaded =
+        content::GltfLoader::load(kScenes / (std::string(GetParam().name) + ".gltf"));
+    engine::Engine engine;
+    engine.renderer().environment.background = glm::vec3(0.0f);
+    engine::RenderTarget target({128, 96});
+    const engine::FrameStats stats = engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    EXPECT_GT(stats.triangles, 500u);
+    const engine::Image image = target.readPixels();
+    std::size_t covered = 0;
+    for (int y = 0; y < image.size.y; ++y) {
+        for (int x = 0; x < image.size.x; ++x) {
+            const glm::u8vec4 p = image.at(x, y);
+            covered += (p.r | p.g | p.b) != 0;
+        }
+    }
+    EXPECT_GT(covered, static_cast<std::size_t>(image.size.x * image.size.y) / 4);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ContentScenesGLTest, testing::ValuesIn(kScenesExpected),
+                         [](const auto& test) {
+                             std::string name = test.param.name;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
