@@ -297,3 +297,154 @@ TEST_P(GltfRoundTripTest, PreservesGeometryHierarchyCamerasAndLights) {
 
 INSTANTIATE_TEST_SUITE_P(Formats, GltfRoundTripTest, testing::Values(".gltf", ".glb"),
                          [](const auto& test) { return std::string(test.param + 1); });
+
+namespace {
+
+/// Four vertices of a unit quad in XY, interleaved position+normal (24-byte stride).
+std::vector<unsigned char> interleavedQuad() {
+    std::vector<unsigned char> bytes;
+    const glm::vec3 normal(0, 0, 1);
+    for (const glm::vec3 p :
+         {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1, 1, 0), glm::vec3(0, 1, 0)}) {
+        appendBytes(bytes, p);
+        appendBytes(bytes, normal);
+    }
+    return bytes;
+}
+
+/// A glTF with one quad mesh drawn as `mode` from `indices` stored as `componentType`, with its buffer in an
+/// external .bin file.
+std::string quadGltf(int mode, int componentType, std::size_t indexCount, std::size_t indexBytes,
+                     const std::string& nodeFields) {
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+           R"("nodes":[{"name":"quad","mesh":0)" +
+           nodeFields +
+           R"(}],"meshes":[{"primitives":[{"attributes":{"POSITION":0,"NORMAL":1},"indices":2,"mode":)" +
+           std::to_string(mode) + R"(}]}],"buffers":[{"byteLength":)" + std::to_string(96 + indexBytes) +
+           R"(,"uri":"quad.bin"}],)"
+           R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":96,"byteStride":24},)"
+           R"({"buffer":0,"byteOffset":96,"byteLength":)" +
+           std::to_string(indexBytes) +
+           R"(}],)"
+           R"("accessors":[{"bufferView":0,"byteOffset":0,"componentType":5126,"count":4,"type":"VEC3",)"
+           R"("min":[0,0,0],"max":[1,1,0]},)"
+           R"({"bufferView":0,"byteOffset":12,"componentType":5126,"count":4,"type":"VEC3"},)"
+           R"({"bufferView":1,"componentType":)" +
+           std::to_string(componentType) + R"(,"count":)" + std::to_string(indexCount) +
+           R"(,"type":"SCALAR"}]})";
+}
+
+template <typename Index>
+std::vector<unsigned char> withIndices(std::vector<unsigned char> bytes, const std::vector<Index>& indices) {
+    for (Index i : indices) {
+        appendBytes(bytes, i);
+    }
+    while (bytes.size() % 4 != 0) {
+        bytes.push_back(0);
+    }
+    return bytes;
+}
+
+} // namespace
+
+struct LayoutCase {
+    const char* name;
+    int mode;
+    int componentType;
+    std::vector<std::uint32_t> indices;
+};
+
+class GltfLayoutTest : public GltfTest, public testing::WithParamInterface<LayoutCase> {};
+
+TEST_P(GltfLayoutTest, ExternalInterleavedBufferGivesTheSameQuad) {
+    const LayoutCase& c = GetParam();
+    std::vector<unsigned char> bytes;
+    std::size_t indexBytes = 0;
+    if (c.componentType == 5121) {
+        bytes = withIndices(interleavedQuad(), std::vector<std::uint8_t>(c.indices.begin(), c.indices.end()));
+        indexBytes = c.indices.size();
+    } else if (c.componentType == 5123) {
+        bytes =
+            withIndices(interleavedQuad(), std::vector<std::uint16_t>(c.indices.begin(), c.indices.end()));
+        indexBytes = 2 * c.indices.size();
+    } else {
+        bytes = withIndices(interleavedQuad(), c.indices);
+        indexBytes = 4 * c.indices.size();
+    }
+    indexBytes = (indexBytes + 3) / 4 * 4;
+    write("quad.bin", std::string(bytes.begin(), bytes.end()));
+    const auto path = write("quad.gltf", quadGltf(c.mode, c.componentType, c.indices.size(), indexBytes, ""));
+    const LoadedScene loaded = GltfLoader::load(path);
+    const auto& mesh = *loaded.scene.entity(0).mesh->mesh;
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.positions[2], glm::vec3(1, 1, 0));
+    EXPECT_EQ(mesh.normals[3], glm::vec3(0, 0, 1));
+    ASSERT_EQ(mesh.indices.size(), 6u);
+    // Both triangles are counter-clockwise seen from +Z, whatever the primitive mode.
+    for (std::size_t t = 0; t < 6; t += 3) {
+        const glm::vec3 a = mesh.positions[mesh.indices[t]];
+        const glm::vec3 n =
+            glm::cross(mesh.positions[mesh.indices[t + 1]] - a, mesh.positions[mesh.indices[t + 2]] - a);
+        EXPECT_GT(n.z, 0.0f) << "triangle " << t / 3;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Layouts, GltfLayoutTest,
+                         testing::Values(LayoutCase{"trianglesU8", 4, 5121, {0, 1, 2, 0, 2, 3}},
+                                         LayoutCase{"trianglesU16", 4, 5123, {0, 1, 2, 0, 2, 3}},
+                                         LayoutCase{"trianglesU32", 4, 5125, {0, 1, 2, 0, 2, 3}},
+                                         LayoutCase{"strip", 5, 5123, {1, 2, 0, 3}},
+                                         LayoutCase{"fan", 6, 5125, {0, 1, 2, 3}}),
+                         [](const auto& test) { return std::string(test.param.name); });
+
+TEST_F(GltfTest, NodeMatrixAndOrthographicCameraAreRead) {
+    std::vector<unsigned char> bytes =
+        withIndices(interleavedQuad(), std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
+    write("quad.bin", std::string(bytes.begin(), bytes.end()));
+    // Column-major: scale 2, then translate (5, 6, 7).
+    const std::string matrix = R"(,"matrix":[2,0,0,0, 0,2,0,0, 0,0,2,0, 5,6,7,1],"camera":0)";
+    std::string text = quadGltf(4, 5123, 6, 12, matrix);
+    text.insert(
+        text.size() - 1,
+        R"(,"cameras":[{"type":"orthographic","orthographic":{"xmag":3,"ymag":2,"znear":0.5,"zfar":50}}])");
+    const LoadedScene loaded = GltfLoader::load(write("quad.gltf", text));
+    const glm::mat4 world = loaded.scene.worldMatrix(0);
+    EXPECT_EQ(glm::vec3(world * glm::vec4(1, 1, 0, 1)), glm::vec3(7, 8, 7));
+    const auto& camera = *loaded.scene.entity(0).camera;
+    EXPECT_EQ(camera.projection, engine::ProjectionType::Orthographic);
+    EXPECT_FLOAT_EQ(camera.orthographicHeight, 4.0f);
+    EXPECT_FLOAT_EQ(camera.farPlane, 50.0f);
+}
+
+TEST_F(GltfTest, MissingExternalBufferIsAnError) {
+    const auto path = write("quad.gltf", quadGltf(4, 5123, 6, 12, ""));
+    const std::string message = loadError(path);
+    EXPECT_NE(message.find(path.string() + ": not a valid glTF 2.0 file"), std::string::npos) << message;
+    EXPECT_NE(message.find("quad.bin"), std::string::npos) << message;
+}
+
+TEST_F(GltfTest, SubdivisionFlagOnOwnTrianglesUsesTheWeldedMesh) {
+    // An octahedron as six separate triangle primitives' worth of split vertices: welding must reconnect it.
+    const glm::vec3 v[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const int faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                             {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    engine::Scene scene;
+    auto mesh = std::make_shared<engine::MeshData>();
+    for (const auto& face : faces) {
+        for (int corner : face) {
+            mesh->indices.push_back(static_cast<std::uint32_t>(mesh->positions.size()));
+            mesh->positions.push_back(v[corner]); // split: no vertex shared between faces
+        }
+    }
+    const auto id = scene.create("octahedron");
+    scene.entity(id).mesh = engine::MeshComponent{mesh};
+    const auto path = folder_ / "octa.gltf";
+    GltfWriter::save(scene, path, {{id, SubdivisionTag{"loop", 2, ""}}});
+    const LoadedScene loaded = GltfLoader::load(path);
+    ASSERT_EQ(loaded.subdivided.size(), 1u);
+    EXPECT_EQ(loaded.subdivided[0].second.scheme, "loop");
+    const auto& surface = *loaded.scene.entity(id).mesh->mesh;
+    // Loop growth on a closed welded octahedron: F = 8 * 4^2 = 128 triangles, V = F/2 + 2 = 66.
+    EXPECT_EQ(surface.triangleCount(), 128u);
+    EXPECT_EQ(surface.positions.size(), 66u);
+}
