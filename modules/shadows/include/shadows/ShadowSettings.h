@@ -1,0 +1,126 @@
+#pragma once
+
+#include <shadows/TapPattern.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadows {
+
+/// @brief The visibility functions the module can run; each selectable at run time.
+enum class ShadowTechnique {
+    HardCompare,           ///< 1. one hardware comparison (sampler2DShadow, NEAREST) + constant bias
+    SlopeScaledBias,       ///< 2. as 1, with slope-scaled polygon offset on the casters
+    HardwarePcf,           ///< 3. hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)
+    Pcf,                   ///< 4. N-tap PCF (grid or Poisson), optional per-pixel rotation
+    Gsm,                   ///< 5. single-tap gradient shadow map: linear depth, fuzzy comparison
+    PcfGsmNaive,           ///< 6. PCF over GSM, taps compared at the fragment's depth (reproduces Fig. 4.2.3)
+    PcfGsmPointGradient,   ///< 7. PCF over GSM, taps follow the fragment's gradient
+    PcfGsmAverageGradient, ///< 8. PCF over GSM, taps follow the least-squares gradient of the taps
+    PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
+    ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
+    NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
+};
+
+/// @brief Where the single-fragment depth gradient comes from (GSM reference, "Overview").
+enum class GradientSource {
+    StoredDerivatives,  ///< dz/dxy written by the depth pass into an RG32F target
+    CentralDifferences, ///< central differences of the depth map, four extra lookups
+    ScreenSpace,        ///< receiver plane from screen-space derivatives (2x2 Jacobian solve)
+};
+
+/// @brief Shadow map depth formats.
+enum class DepthFormat { D16, D24, D32F };
+
+/// @brief Which faces (as seen from the light) are rendered into the shadow map.
+enum class CasterFaces { Front, Back };
+
+/// @brief Form of the average-gradient computation for PcfGsmAverageGradient.
+enum class AverageGradientForm {
+    LeastSquares,  ///< any pattern, precomputed inverse covariance
+    Circular8,     ///< the reference's unrolled closed form (forces the Circular8 layout)
+    Circular8Vec4, ///< the reference's SIMD form (forces the Circular8 layout)
+};
+
+/// @brief Kernel of the receiver-plane-bias technique.
+enum class ReceiverPlaneKernel {
+    Bilinear2x2, ///< textureGather, one bias per texel of the bilinear footprint
+    PerTap,      ///< the PCF pattern, one bias per tap
+};
+
+/// @brief What the lighting pass shows instead of the shaded colour.
+enum class ShadowDebugView { None, TexelCheckerboard, GradientMagnitude, Bias, Visibility, ShadowMap };
+
+/// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it
+/// (changing anything re-initialises the affected resources lazily on the next frame).
+struct ShadowSettings {
+    /// Visibility function. Default PcfGsmAverageGradient.
+    ShadowTechnique technique = ShadowTechnique::PcfGsmAverageGradient;
+    /// Shadow map width and height in texels, 64..16384. Default 2048.
+    int resolution = 2048;
+    /// Depth format of the shadow map. Default D24.
+    DepthFormat depthFormat = DepthFormat::D24;
+    /// Faces rendered into the map. Default Front.
+    CasterFaces casterFaces = CasterFaces::Front;
+    /// Receiver moved towards the light before the comparison, world units, >= 0. Default 0.002.
+    float constantBias = 0.002f;
+    /// SlopeScaledBias: glPolygonOffset factor (scales the caster's depth slope), >= 0. Default 1.5.
+    float slopeScale = 1.5f;
+    /// SlopeScaledBias: glPolygonOffset units (multiples of the format's resolvable step), >= 0. Default 2.
+    float slopeUnits = 2.0f;
+    /// PCF layout for Pcf, PcfGsm* and ReceiverPlaneBias/PerTap. Default Grid.
+    TapLayout pcfLayout = TapLayout::Grid;
+    /// Grid: taps per side (2..8); Poisson: tap count (8..64); ignored for Circular8. Default 4.
+    int pcfTaps = 4;
+    /// Radius of the PCF pattern in texels, > 0. Default 1.5.
+    float pcfRadius = 1.5f;
+    /// Rotate the pattern per pixel (interleaved gradient noise) to trade banding for noise. Default false.
+    bool pcfRotate = false;
+    /// Gradient for Gsm, the point-gradient correction and the naive fuzzy width. Default CentralDifferences.
+    GradientSource gradientSource = GradientSource::CentralDifferences;
+    /// GSM fuzzy band width in texels of depth change, > 0. Default 1.
+    float fuzzyScale = 1.0f;
+    /// Average-gradient form. Default LeastSquares.
+    AverageGradientForm averageGradientForm = AverageGradientForm::LeastSquares;
+    /// ReceiverPlaneBias kernel. Default Bilinear2x2.
+    ReceiverPlaneKernel receiverPlaneKernel = ReceiverPlaneKernel::Bilinear2x2;
+    /// ReceiverPlaneBias: only let the bias move receivers towards the light (min(0, bias)). Default true.
+    bool receiverPlaneClamp = true;
+    /// NormalOffset: offset along the normal in texel sizes at the receiver, >= 0. Default 1.5.
+    float normalOffsetTexels = 1.5f;
+    /// Floor the receiver depth to the format's step before hardware comparisons (bias reference). Default
+    /// false.
+    bool floorReceiverDepth = false;
+    /// Snap the directional light's frustum to whole texels so shadows do not shimmer. Default true.
+    bool texelSnapping = true;
+    /// Debug output of the lighting pass. Default None.
+    ShadowDebugView debugView = ShadowDebugView::None;
+
+    /// @brief Empty when the settings are usable, otherwise one line per problem naming the field.
+    [[nodiscard]] std::vector<std::string> validate() const;
+    /// @brief The tap pattern these settings select (Circular8 forms force the Circular8 layout).
+    [[nodiscard]] TapPattern tapPattern() const;
+
+    bool operator==(const ShadowSettings&) const = default;
+};
+
+/// @brief Stable names ("hard", "slope-scaled", "hw-pcf", "pcf", "gsm", "pcf-gsm-naive", "pcf-gsm-point",
+/// "pcf-gsm-average", "pcf-gsm-quadratic", "receiver-plane", "normal-offset") for CLIs and files.
+std::string_view toString(ShadowTechnique technique);
+std::optional<ShadowTechnique> techniqueFromString(std::string_view name);
+/// @brief Every technique in declaration order.
+const std::vector<ShadowTechnique>& allTechniques();
+
+std::string_view toString(DepthFormat format);
+std::optional<DepthFormat> depthFormatFromString(std::string_view name);
+std::string_view toString(GradientSource source);
+std::optional<GradientSource> gradientSourceFromString(std::string_view name);
+std::string_view toString(ShadowDebugView view);
+std::optional<ShadowDebugView> debugViewFromString(std::string_view name);
+
+/// @brief Depth step of a format: 1/65535 (D16), 1/16777215 (D24), 0 for D32F (float, no fixed step).
+float depthStep(DepthFormat format);
+
+} // namespace shadows

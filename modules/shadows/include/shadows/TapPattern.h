@@ -1,0 +1,43 @@
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace shadows {
+
+/// @brief Layouts of PCF taps.
+enum class TapLayout {
+    Grid,      ///< n x n regular grid spanning [-radius, radius]² (n = 2..8).
+    Poisson,   ///< Poisson-disk points inside the radius (8..64), fixed seed.
+    Circular8, ///< The GSM multisampling reference's 8-tap pattern (4 axial at sqrt(2)·d, 4 diagonal at (±d,
+               ///< ±d)).
+};
+
+/// @brief A PCF tap pattern plus what the least-squares fits over it need, precomputed on the CPU.
+struct TapPattern {
+    static constexpr int kMaxTaps = 64;
+
+    TapLayout layout = TapLayout::Grid;
+    /// Offsets in texels, in the pattern's own frame.
+    std::vector<glm::vec2> offsets;
+    /// (sum (o - mean)(o - mean)^T)^-1; zero when the offsets do not span the plane.
+    glm::mat2 inverseCovariance{0.0f};
+    /// Rows of the 6 x N least-squares pseudo-inverse for f(o) = a + g.o + ½ oᵀHo, coefficients ordered
+    /// (a, gx, gy, Hxx, Hxy, Hyy); laid out row-major with a stride of kMaxTaps (see visibility.glsl).
+    std::array<float, 6 * kMaxTaps> quadraticFitRows{};
+    /// False when the taps cannot determine a quadric (e.g. all on one circle); the fit rows then carry the
+    /// linear fit only (curvature rows zero).
+    bool quadraticValid = false;
+
+    /// @brief Builds a pattern; `taps` is n for Grid (taps n² ) and the point count for Poisson; ignored for
+    /// Circular8. `radius` is in texels (> 0). Throws std::invalid_argument naming the bad parameter.
+    static TapPattern make(TapLayout layout, int taps, float radius);
+};
+
+/// @brief "grid", "poisson", "circular8".
+std::string toString(TapLayout layout);
+
+} // namespace shadows

@@ -1,0 +1,163 @@
+// Shadow visibility math, written once in a GLSL subset that also compiles as C++ with GLM
+// (modules/shadows/include/shadows/VisibilityMath.h), so the CPU tests run exactly what the shader runs.
+// Subset rules: float literals carry an `f` suffix, outputs use GS_OUT(T), no texture access here.
+//
+// Units: tap offsets and gradients are per shadow-map texel (dz per texel step); depths are in the shadow
+// map's [0,1] range. Tap offsets are in the pattern's own frame: a per-pixel rotation is applied only when
+// fetching, and a point gradient is rotated into the pattern frame by the caller, so fits stay rotation-free.
+// Every division is guarded and every visibility is clamped to [0,1].
+
+const int GS_MAX_TAPS = 64;
+
+float gsSaturate(float x) { return clamp(x, 0.0f, 1.0f); }
+
+// Plain depth test: lit when the receiver is not behind the stored occluder depth.
+float gsCompare(float storedDepth, float receiverDepth) { return receiverDepth <= storedDepth ? 1.0f : 0.0f; }
+
+// Bias reference, "Shadows from Front or Back faces": the comparison hardware rounds the reference to the
+// depth format; flooring it to a multiple of the format's step first makes that rounding a no-op, so a D16 map
+// shows no extra acne. `step` is 1/65535 for D16, 1/16777215 for D24, 0 (no quantisation) for D32F.
+float gsFloorToStep(float depth, float step) { return step > 0.0f ? floor(depth / step) * step : depth; }
+
+// Schüler, "Eliminating Surface Acne with Gradient Shadow Mapping" (ShaderX4): the fuzzy comparison
+// saturate(diff / |g| + 1). The band width is the gradient magnitude times `fuzzyScale` texels, never below
+// `minimumWidth` (the depth format's step), so a zero gradient (surface facing the light) gives a hard but
+// finite comparison instead of 0/0.
+float gsFuzzyVisibility(float storedDepth, float receiverDepth, float gradientMagnitude, float fuzzyScale,
+                        float minimumWidth) {
+    float width = max(max(gradientMagnitude * fuzzyScale, minimumWidth), 1e-30f);
+    return gsSaturate((storedDepth - receiverDepth) / width + 1.0f);
+}
+
+// Receiver plane depth bias (bias reference, "Receiver Plane Depth Bias"): dz/duv from screen derivatives by the
+// chain rule, inverting the 2x2 Jacobian d(uv)/d(xy). Returns zero where the Jacobian is (nearly) singular —
+// the receiver is seen edge-on or the pixel quad straddles a discontinuity — rather than an unbounded slope.
+vec2 gsReceiverPlaneGradient(vec2 duvdx, vec2 duvdy, float dzdx, float dzdy) {
+    float det = duvdx.x * duvdy.y - duvdx.y * duvdy.x;
+    float scale = abs(duvdx.x * duvdy.y) + abs(duvdx.y * duvdy.x);
+    if (!(abs(det) > 1e-6f * scale) || !(scale > 0.0f)) {
+        return vec2(0.0f);
+    }
+    return vec2(duvdy.y * dzdx - duvdx.y * dzdy, duvdx.x * dzdy - duvdy.x * dzdx) / det;
+}
+
+// The depth a PCF tap should be compared at: the receiver plane followed from the fragment to the tap
+// (GSM multisampling reference, "Merging the Algorithms", Figure 4.2.4b).
+float gsTapReceiverDepth(float receiverDepth, vec2 offset, vec2 gradient) {
+    return receiverDepth + dot(offset, gradient);
+}
+
+// Average gradient by least squares over the taps' own depths (GSM multisampling reference, "Optimizing Texture
+// Look-ups"): g = (sum o o^T)^-1 sum (d - mean d) o. `inverseCovariance` is precomputed per tap pattern (zero
+// when the pattern is degenerate, which yields a zero gradient).
+vec2 gsLeastSquaresGradient(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS], int count,
+                            mat2 inverseCovariance) {
+    float mean = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        mean += depths[i];
+    }
+    mean /= float(max(count, 1));
+    vec2 weighted = vec2(0.0f);
+    for (int i = 0; i < count; ++i) {
+        weighted += (depths[i] - mean) * offsets[i];
+    }
+    return inverseCovariance * weighted;
+}
+
+// The reference's unrolled circular-8 pattern: axial taps at (±L,0),(0,±L) with L = sqrt(2)·d and diagonal taps at
+// (±d,±d). Sum x^2 = 2L^2 + 4d^2 = 8d^2, so g = [sqrt(2)(d1-d0) + d5+d7-d4-d6] / (8d) (x; y alike).
+// Tap order: 0 (-L,0), 1 (L,0), 2 (0,-L), 3 (0,L), 4 (-d,-d), 5 (d,-d), 6 (-d,d), 7 (d,d).
+vec2 gsCircular8Gradient(const float depths[8], float displace) {
+    float inverseCovariance = 1.0f / (8.0f * max(displace, 1e-30f));
+    return vec2(1.41421356f * (depths[1] - depths[0]) + depths[5] + depths[7] - depths[4] - depths[6],
+                1.41421356f * (depths[3] - depths[2]) + depths[6] + depths[7] - depths[4] - depths[5]) *
+           inverseCovariance;
+}
+
+// The same in the reference's 4-wide SIMD form ("Optimizing with SIMD Vectorization"): axial = taps 0..3,
+// diagonal = taps 4..7.
+vec2 gsCircular8GradientVec4(vec4 axial, vec4 diagonal, float displace) {
+    float inverseCovariance = 1.0f / (8.0f * max(displace, 1e-30f));
+    vec2 axialTerm = vec2(axial.y - axial.x, axial.w - axial.z) * 1.41421356f;
+    vec2 diagonalTerm = vec2(diagonal.y + diagonal.w - diagonal.x - diagonal.z,
+                             diagonal.z + diagonal.w - diagonal.x - diagonal.y);
+    return (axialTerm + diagonalTerm) * inverseCovariance;
+}
+
+// Second-order correction (the reference's "obvious improvement": higher-order derivatives). A least-squares
+// quadric f(o) = a + g.o + 0.5 o^T H o over the taps; `fitRows` holds the precomputed 6 x N pseudo-inverse,
+// row r at fitRows[r * GS_MAX_TAPS + i]. Returns g in xy and (Hxx, Hxy, Hyy) in `curvature`.
+vec2 gsQuadraticFit(const float depths[GS_MAX_TAPS], int count, const float fitRows[6 * GS_MAX_TAPS], GS_OUT(vec3) curvature) {
+    float coefficients[6];
+    for (int r = 0; r < 6; ++r) {
+        float sum = 0.0f;
+        for (int i = 0; i < count; ++i) {
+            sum += fitRows[r * GS_MAX_TAPS + i] * depths[i];
+        }
+        coefficients[r] = sum;
+    }
+    curvature = vec3(coefficients[3], coefficients[4], coefficients[5]);
+    return vec2(coefficients[1], coefficients[2]);
+}
+
+// Depth change of the fitted quadric from the fragment to `offset`.
+float gsQuadraticRise(vec2 offset, vec2 gradient, vec3 curvature) {
+    return dot(offset, gradient) + 0.5f * curvature.x * offset.x * offset.x + curvature.y * offset.x * offset.y +
+           0.5f * curvature.z * offset.y * offset.y;
+}
+
+const int GS_CORRECTION_NONE = 0;      // naive: every tap compared at the fragment's depth (Fig. 4.2.3)
+const int GS_CORRECTION_POINT = 1;     // taps follow the fragment's own gradient
+const int GS_CORRECTION_AVERAGE = 2;   // taps follow the least-squares gradient of the taps' depths
+const int GS_CORRECTION_QUADRATIC = 3; // taps follow a least-squares quadric of the taps' depths
+
+// PCF over GSM: the average of the fuzzy visibilities of the taps, each compared at the receiver depth the
+// chosen correction predicts for it. `pointGradient` is used by GS_CORRECTION_POINT and for the fuzzy width of
+// GS_CORRECTION_NONE; the fitted corrections use their own gradient for both.
+float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS], int count, float receiverDepth,
+                         vec2 pointGradient, int correction, mat2 inverseCovariance,
+                         const float fitRows[6 * GS_MAX_TAPS], float fuzzyScale, float minimumWidth) {
+    vec2 gradient = pointGradient;
+    vec3 curvature = vec3(0.0f);
+    if (correction == GS_CORRECTION_AVERAGE) {
+        gradient = gsLeastSquaresGradient(depths, offsets, count, inverseCovariance);
+    } else if (correction == GS_CORRECTION_QUADRATIC) {
+        gradient = gsQuadraticFit(depths, count, fitRows, curvature);
+    }
+    float magnitude = length(gradient);
+    float sum = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        float tapDepth = receiverDepth;
+        if (correction == GS_CORRECTION_QUADRATIC) {
+            tapDepth += gsQuadraticRise(offsets[i], gradient, curvature);
+        } else if (correction != GS_CORRECTION_NONE) {
+            tapDepth = gsTapReceiverDepth(receiverDepth, offsets[i], gradient);
+        }
+        sum += gsFuzzyVisibility(depths[i], tapDepth, magnitude, fuzzyScale, minimumWidth);
+    }
+    return gsSaturate(sum / float(max(count, 1)));
+}
+
+// Plain PCF: the fraction of taps whose hard comparison passes (Reeves et al. 1987).
+float gsPcfVisibility(const float depths[GS_MAX_TAPS], int count, float receiverDepth) {
+    float sum = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        sum += gsCompare(depths[i], receiverDepth);
+    }
+    return sum / float(max(count, 1));
+}
+
+// Receiver-plane bias for one texel of a 2x2 bilinear footprint (bias reference, "Applications"):
+// the surface depth extrapolated from the fragment to the texel's centre, `toTexelCentre` texels away;
+// with `clampToLit`, the bias may only move the receiver towards the light (min(0, bias)).
+float gsReceiverPlaneTapDepth(float receiverDepth, vec2 toTexelCentre, vec2 gradient, bool clampToLit) {
+    float bias = dot(toTexelCentre, gradient);
+    return receiverDepth + (clampToLit ? min(0.0f, bias) : bias);
+}
+
+// Bilinear blend of four comparisons laid out as textureGather returns them: x (-,+), y (+,+), z (+,-), w (-,-)
+// relative to the sample point, `weights` the fractional position inside the 2x2 footprint.
+float gsBilinear(vec4 visibilities, vec2 weights) {
+    return mix(mix(visibilities.w, visibilities.z, weights.x), mix(visibilities.x, visibilities.y, weights.x),
+               weights.y);
+}

@@ -1,0 +1,266 @@
+// CPU tests of shaders/shadows/visibility.glsl (compiled as C++ through VisibilityMath.h).
+#include <shadows/TapPattern.h>
+#include <shadows/VisibilityMath.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace shadows;
+namespace g = shadows::glsl;
+
+namespace {
+
+constexpr float kD24Step = 1.0f / 16777215.0f;
+
+/// Depths of `surface` at the pattern's taps around `centre` (texel units), as the depth map would hold them.
+struct Taps {
+    float depths[g::GS_MAX_TAPS] = {};
+    glm::vec2 offsets[g::GS_MAX_TAPS] = {};
+    int count = 0;
+};
+
+Taps sample(const TapPattern& pattern, const std::function<float(glm::vec2)>& surface,
+            glm::vec2 centre = {}) {
+    Taps taps;
+    taps.count = static_cast<int>(pattern.offsets.size());
+    for (int i = 0; i < taps.count; ++i) {
+        taps.offsets[i] = pattern.offsets[static_cast<std::size_t>(i)];
+        taps.depths[i] = surface(centre + taps.offsets[i]);
+    }
+    return taps;
+}
+
+float pcfGsm(const TapPattern& pattern, const Taps& taps, float receiverDepth, glm::vec2 pointGradient,
+             int correction) {
+    float fitRows[6 * g::GS_MAX_TAPS];
+    std::copy(pattern.quadraticFitRows.begin(), pattern.quadraticFitRows.end(), fitRows);
+    return g::gsPcfGsmVisibility(taps.depths, taps.offsets, taps.count, receiverDepth, pointGradient,
+                                 correction, pattern.inverseCovariance, fitRows, 1.0f, kD24Step);
+}
+
+struct PatternCase {
+    const char* name;
+    TapLayout layout;
+    int taps;
+    float radius;
+};
+
+const PatternCase kPatterns[] = {
+    {"grid2", TapLayout::Grid, 2, 0.5f},          {"grid4", TapLayout::Grid, 4, 1.5f},
+    {"grid8", TapLayout::Grid, 8, 3.5f},          {"poisson8", TapLayout::Poisson, 8, 2.0f},
+    {"poisson32", TapLayout::Poisson, 32, 3.0f},  {"poisson64", TapLayout::Poisson, 64, 4.0f},
+    {"circular8", TapLayout::Circular8, 8, 1.0f},
+};
+
+class PatternTest : public testing::TestWithParam<PatternCase> {
+protected:
+    TapPattern pattern() const {
+        return TapPattern::make(GetParam().layout, GetParam().taps, GetParam().radius);
+    }
+};
+
+// A plane seen from the light: 0.4 deep at the fragment, sloping 3e-4 per texel in x and -1e-4 in y.
+const glm::vec2 kSlope{3e-4f, -1e-4f};
+float plane(glm::vec2 texel) {
+    return 0.4f + glm::dot(texel, kSlope);
+}
+
+} // namespace
+
+TEST_P(PatternTest, AverageGradientRecoversThePlaneExactly) {
+    const TapPattern p = pattern();
+    const Taps taps = sample(p, plane, {7.25f, -3.5f});
+    const glm::vec2 gradient =
+        g::gsLeastSquaresGradient(taps.depths, taps.offsets, taps.count, p.inverseCovariance);
+    EXPECT_NEAR(gradient.x, kSlope.x, 2e-7f);
+    EXPECT_NEAR(gradient.y, kSlope.y, 2e-7f);
+}
+
+TEST_P(PatternTest, CorrectedTechniquesSeeALitPlaneAsFullyLit) {
+    const TapPattern p = pattern();
+    const Taps taps = sample(p, plane);
+    const float receiver = plane({}) - 1e-6f; // the lit surface itself, with a tiny GSM bias
+    EXPECT_EQ(pcfGsm(p, taps, receiver, kSlope, g::GS_CORRECTION_POINT), 1.0f);
+    EXPECT_EQ(pcfGsm(p, taps, receiver, kSlope, g::GS_CORRECTION_AVERAGE), 1.0f);
+    EXPECT_EQ(pcfGsm(p, taps, receiver, kSlope, g::GS_CORRECTION_QUADRATIC), 1.0f);
+}
+
+TEST_P(PatternTest, NaivePcfOverGsmLosesAboutHalfTheLight) {
+    // Reference Fig. 4.2.3: uncorrected taps dip into the shadow volume on one side of every slope.
+    const TapPattern p = pattern();
+    const Taps taps = sample(p, plane);
+    const float naive = pcfGsm(p, taps, plane({}) - 1e-6f, kSlope, g::GS_CORRECTION_NONE);
+    EXPECT_GT(naive, 0.3f);
+    EXPECT_LT(naive, 0.8f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Patterns, PatternTest, testing::ValuesIn(kPatterns),
+                         [](const auto& test) { return std::string(test.param.name); });
+
+TEST(VisibilityMathTest, NaiveDarkeningApproachesOneHalfForWidePatterns) {
+    const TapPattern p = TapPattern::make(TapLayout::Grid, 8, 3.5f);
+    const Taps taps = sample(p, plane);
+    EXPECT_NEAR(pcfGsm(p, taps, plane({}), kSlope, g::GS_CORRECTION_NONE), 0.5f, 0.08f);
+}
+
+TEST(VisibilityMathTest, QuadraticFitRecoversAParaboloid) {
+    const TapPattern p = TapPattern::make(TapLayout::Grid, 5, 2.0f);
+    ASSERT_TRUE(p.quadraticValid);
+    // z = 0.5 + g.o + ½ oᵀHo with Hxx = 2e-4, Hxy = -5e-5, Hyy = 1e-4.
+    const glm::vec3 h(2e-4f, -5e-5f, 1e-4f);
+    auto paraboloid = [&](glm::vec2 o) {
+        return 0.5f + glm::dot(o, kSlope) + 0.5f * h.x * o.x * o.x + h.y * o.x * o.y + 0.5f * h.z * o.y * o.y;
+    };
+    const Taps taps = sample(p, paraboloid);
+    float fitRows[6 * g::GS_MAX_TAPS];
+    std::copy(p.quadraticFitRows.begin(), p.quadraticFitRows.end(), fitRows);
+    glm::vec3 curvature;
+    const glm::vec2 gradient = g::gsQuadraticFit(taps.depths, taps.count, fitRows, curvature);
+    EXPECT_NEAR(gradient.x, kSlope.x, 1e-6f);
+    EXPECT_NEAR(gradient.y, kSlope.y, 1e-6f);
+    EXPECT_NEAR(curvature.x, h.x, 2e-6f);
+    EXPECT_NEAR(curvature.y, h.y, 2e-6f);
+    EXPECT_NEAR(curvature.z, h.z, 2e-6f);
+    // On the paraboloid itself every tap is predicted exactly: fully lit.
+    EXPECT_EQ(pcfGsm(p, taps, paraboloid({}) - 1e-6f, kSlope, g::GS_CORRECTION_QUADRATIC), 1.0f);
+}
+
+TEST(VisibilityMathTest, ConcaveSurfaceDarkensLessUnderHigherOrderCorrections) {
+    // A concave valley (curving towards the light, i.e. depth decreasing away from the fragment), the
+    // knob-neck case of Fig. 4.2.5: point gradient > average gradient > quadratic in darkening.
+    const TapPattern p = TapPattern::make(TapLayout::Grid, 5, 2.0f);
+    const glm::vec2 slope(4e-4f, 0.0f);
+    auto valley = [&](glm::vec2 o) { return 0.5f + glm::dot(o, slope) - 6e-5f * (o.x * o.x + o.y * o.y); };
+    const Taps taps = sample(p, valley, {});
+    const float receiver = valley({}) - 1e-6f;
+    const float point = pcfGsm(p, taps, receiver, slope, g::GS_CORRECTION_POINT);
+    const float average = pcfGsm(p, taps, receiver, slope, g::GS_CORRECTION_AVERAGE);
+    const float quadratic = pcfGsm(p, taps, receiver, slope, g::GS_CORRECTION_QUADRATIC);
+    EXPECT_LT(point, average);
+    EXPECT_LE(average, quadratic);
+    EXPECT_EQ(quadratic, 1.0f);
+}
+
+TEST(VisibilityMathTest, Circular8ClosedFormsMatchTheGeneralRegression) {
+    const TapPattern p = TapPattern::make(TapLayout::Circular8, 8, 0.7f);
+    const Taps taps = sample(p, plane);
+    float eight[8];
+    std::copy(taps.depths, taps.depths + 8, eight);
+    const float displace = 0.7f / std::sqrt(2.0f);
+    const glm::vec2 closed = g::gsCircular8Gradient(eight, displace);
+    const glm::vec2 simd =
+        g::gsCircular8GradientVec4(glm::vec4(eight[0], eight[1], eight[2], eight[3]),
+                                   glm::vec4(eight[4], eight[5], eight[6], eight[7]), displace);
+    const glm::vec2 general = g::gsLeastSquaresGradient(taps.depths, taps.offsets, 8, p.inverseCovariance);
+    EXPECT_NEAR(closed.x, general.x, 1e-7f);
+    EXPECT_NEAR(closed.y, general.y, 1e-7f);
+    EXPECT_NEAR(simd.x, general.x, 1e-7f);
+    EXPECT_NEAR(simd.y, general.y, 1e-7f);
+    EXPECT_NEAR(general.x, kSlope.x, 2e-7f);
+    EXPECT_FALSE(p.quadraticValid); // all eight taps lie on one circle: no quadric through them
+}
+
+struct ExtremeCase {
+    const char* name;
+    float stored;
+    float receiver;
+    float gradientMagnitude;
+    float minimumWidth;
+};
+
+class FuzzyExtremesTest : public testing::TestWithParam<ExtremeCase> {};
+
+TEST_P(FuzzyExtremesTest, StaysFiniteAndInUnitRange) {
+    const ExtremeCase& c = GetParam();
+    const float v = g::gsFuzzyVisibility(c.stored, c.receiver, c.gradientMagnitude, 1.0f, c.minimumWidth);
+    EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GE(v, 0.0f);
+    EXPECT_LE(v, 1.0f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, FuzzyExtremesTest,
+                         testing::Values(ExtremeCase{"zeroGradientLit", 0.5f, 0.5f, 0.0f, 0.0f},
+                                         ExtremeCase{"zeroGradientShadowed", 0.4f, 0.5f, 0.0f, 0.0f},
+                                         ExtremeCase{"zeroGradientZeroDiff", 0.5f, 0.5f, 0.0f, kD24Step},
+                                         ExtremeCase{"grazingGradient", 0.5f, 0.7f, 1e30f, kD24Step},
+                                         ExtremeCase{"hugeDifference", 1.0f, 0.0f, 1e-30f, 0.0f},
+                                         ExtremeCase{"denormalGradient", 0.5f, 0.50001f, 1e-42f, 0.0f}),
+                         [](const auto& test) { return std::string(test.param.name); });
+
+TEST(VisibilityMathTest, ZeroGradientIsAFiniteHardComparison) {
+    // With no gradient the band is one depth step of the format (D16 here, coarse enough for float at 0.5).
+    const float step = 1.0f / 65535.0f;
+    EXPECT_EQ(g::gsFuzzyVisibility(0.5f, 0.5f, 0.0f, 1.0f, step), 1.0f);
+    EXPECT_EQ(g::gsFuzzyVisibility(0.5f, 0.5f + 10.0f * step, 0.0f, 1.0f, step), 0.0f);
+    EXPECT_NEAR(g::gsFuzzyVisibility(0.5f, 0.5f + 0.5f * step, 0.0f, 1.0f, step), 0.5f, 1e-3f);
+}
+
+TEST(VisibilityMathTest, ReceiverPlaneGradientSolvesTheChainRule) {
+    // uv = M xy with M = [[2, 0.5], [-1, 3]] (columns: d/dx, d/dy), z = 0.1 u - 0.2 v: dz/duv must be (0.1,
+    // -0.2).
+    const glm::vec2 duvdx(2.0f, -1.0f);
+    const glm::vec2 duvdy(0.5f, 3.0f);
+    const float dzdx = 0.1f * duvdx.x - 0.2f * duvdx.y;
+    const float dzdy = 0.1f * duvdy.x - 0.2f * duvdy.y;
+    const glm::vec2 g2 = g::gsReceiverPlaneGradient(duvdx, duvdy, dzdx, dzdy);
+    EXPECT_NEAR(g2.x, 0.1f, 1e-6f);
+    EXPECT_NEAR(g2.y, -0.2f, 1e-6f);
+}
+
+TEST(VisibilityMathTest, SingularJacobianGivesZeroGradientNotInfinity) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const auto& [dx, dy] : {std::pair{glm::vec2(1, 2), glm::vec2(2, 4)},          // parallel: det = 0
+                                 std::pair{glm::vec2(0, 0), glm::vec2(0, 0)},          // no footprint
+                                 std::pair{glm::vec2(1, 1), glm::vec2(1, 1.0000001f)}, // nearly parallel
+                                 std::pair{glm::vec2(nan, 0), glm::vec2(0, 1)}}) {
+        EXPECT_EQ(g::gsReceiverPlaneGradient(dx, dy, 0.3f, -0.7f), glm::vec2(0.0f));
+    }
+    // A vanishing but well-conditioned footprint (det underflows to a denormal) stays finite.
+    const glm::vec2 tiny = g::gsReceiverPlaneGradient({1e-20f, 0}, {0, 1e-20f}, 0.3e-20f, -0.7e-20f);
+    EXPECT_TRUE(std::isfinite(tiny.x) && std::isfinite(tiny.y));
+    EXPECT_NEAR(tiny.x, 0.3f, 1e-3f);
+}
+
+TEST(VisibilityMathTest, FloorToStepRemovesRoundingUpward) {
+    const float step = 1.0f / 65535.0f;
+    const float depth = 1000.6f * step; // rounds up to 1001 steps, floors to 1000
+    EXPECT_FLOAT_EQ(g::gsFloorToStep(depth, step), 1000.0f * step);
+    EXPECT_LE(g::gsFloorToStep(depth, step), depth);
+    EXPECT_EQ(g::gsFloorToStep(depth, 0.0f), depth);
+}
+
+TEST(VisibilityMathTest, ReceiverPlaneClampOnlyMovesTowardsTheLight) {
+    const glm::vec2 gradient(1e-3f, 0.0f);
+    EXPECT_FLOAT_EQ(g::gsReceiverPlaneTapDepth(0.5f, {0.5f, 0.0f}, gradient, false), 0.5005f);
+    EXPECT_FLOAT_EQ(g::gsReceiverPlaneTapDepth(0.5f, {0.5f, 0.0f}, gradient, true), 0.5f);
+    EXPECT_FLOAT_EQ(g::gsReceiverPlaneTapDepth(0.5f, {-0.5f, 0.0f}, gradient, true), 0.4995f);
+}
+
+TEST(VisibilityMathTest, BilinearBlendFollowsGatherOrder) {
+    // Gather: x (-,+), y (+,+), z (+,-), w (-,-). At weights (0,0) we are at the (-,-) texel.
+    const glm::vec4 v(0.1f, 0.2f, 0.3f, 0.4f);
+    EXPECT_FLOAT_EQ(g::gsBilinear(v, {0, 0}), 0.4f);
+    EXPECT_FLOAT_EQ(g::gsBilinear(v, {1, 0}), 0.3f);
+    EXPECT_FLOAT_EQ(g::gsBilinear(v, {0, 1}), 0.1f);
+    EXPECT_FLOAT_EQ(g::gsBilinear(v, {1, 1}), 0.2f);
+}
+
+TEST(TapPatternTest, RejectsBadParametersByName) {
+    EXPECT_THROW(TapPattern::make(TapLayout::Grid, 9, 1.0f), std::invalid_argument);
+    EXPECT_THROW(TapPattern::make(TapLayout::Poisson, 4, 1.0f), std::invalid_argument);
+    EXPECT_THROW(TapPattern::make(TapLayout::Grid, 4, 0.0f), std::invalid_argument);
+    EXPECT_THROW(TapPattern::make(TapLayout::Grid, 4, std::nanf("")), std::invalid_argument);
+}
+
+TEST(TapPatternTest, PoissonPatternIsDeterministicAndInsideTheRadius) {
+    const TapPattern a = TapPattern::make(TapLayout::Poisson, 32, 2.5f);
+    const TapPattern b = TapPattern::make(TapLayout::Poisson, 32, 2.5f);
+    EXPECT_EQ(a.offsets, b.offsets);
+    ASSERT_EQ(a.offsets.size(), 32u);
+    for (const glm::vec2& o : a.offsets) {
+        EXPECT_LE(glm::length(o), 2.5f + 1e-5f);
+    }
+}
