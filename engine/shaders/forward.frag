@@ -36,6 +36,7 @@ void main() {
         color += visibility * attenuation *
                  gsBlinnPhong(normal, toLight, toCamera, lightColor, uBaseColor, uSpecularColor, uShininess);
     }
+#pragma gs_slot(final_color)
     // Linear output; the sRGB framebuffer encodes it (GL_FRAMEBUFFER_SRGB).
     outColor = vec4(color, 1.0);
 }

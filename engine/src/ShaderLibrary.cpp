@@ -134,15 +134,12 @@ private:
         }
     }
 
+    /// Chunks are preprocessed like files, so they may `#include` the module's own GLSL files.
     void fillSlot(std::string_view slot) {
         for (const ShaderChunk& chunk : chunks_) {
-            if (chunk.slot != slot) {
-                continue;
+            if (chunk.slot == slot) {
+                emitFile(chunk.origin, chunk.source, false);
             }
-            out_ += lineDirective(fileNames_.size(), 1);
-            fileNames_.push_back(chunk.origin);
-            out_ += chunk.source;
-            out_ += '\n';
         }
     }
 
