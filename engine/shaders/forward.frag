@@ -37,6 +37,13 @@ void main() {
                  gsBlinnPhong(normal, toLight, toCamera, lightColor, uBaseColor, uSpecularColor, uShininess);
     }
 #pragma gs_slot(final_color)
+#if defined(GS_OUTPUT_WORLD_POSITION)
+    // Measurement pass (float target): where each pixel's surface is, alpha 1 marks covered pixels.
+    outColor = vec4(vWorldPosition, 1.0);
+#elif defined(GS_OUTPUT_WORLD_NORMAL)
+    outColor = vec4(normal, 1.0);
+#else
     // Linear output; the sRGB framebuffer encodes it (GL_FRAMEBUFFER_SRGB).
     outColor = vec4(color, 1.0);
+#endif
 }

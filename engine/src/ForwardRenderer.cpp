@@ -38,6 +38,8 @@ struct Vertex {
 ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& programs)
     : programs_(programs), flatNormalsFlag_(layout.flag("GS_FLAT_NORMALS")),
       spotLightsFlag_(layout.flag("GS_HAS_SPOT_LIGHTS")),
+      worldPositionFlag_(layout.flag("GS_OUTPUT_WORLD_POSITION")),
+      worldNormalFlag_(layout.flag("GS_OUTPUT_WORLD_NORMAL")),
       frameBlock_(sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
 
 FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
@@ -149,7 +151,10 @@ FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Mo
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
 
     FrameStats stats;
-    const ShaderVariantKey sceneBits = sceneHasSpotLights_ ? spotLightsFlag_ : 0;
+    const ShaderVariantKey outputBits = output == OutputMode::WorldPosition ? worldPositionFlag_
+                                        : output == OutputMode::WorldNormal ? worldNormalFlag_
+                                                                            : 0;
+    const ShaderVariantKey sceneBits = (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits;
     drawMeshes(frame.scene, [&](EntityId id, const glm::mat4& model) {
         const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
         const DrawContext draw{frame, id, mesh, model};

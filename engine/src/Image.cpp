@@ -15,7 +15,8 @@ glm::u8vec4 Image::at(int x, int y) const {
 
 void writePng(const std::filesystem::path& path, const Image& image) {
     if (image.size.x <= 0 || image.size.y <= 0 ||
-        image.pixels.size() != static_cast<std::size_t>(image.size.x) * static_cast<std::size_t>(image.size.y) * 4) {
+        image.pixels.size() !=
+            static_cast<std::size_t>(image.size.x) * static_cast<std::size_t>(image.size.y) * 4) {
         throw IoError(path.string() + ": image has no pixels or a size that does not match its data");
     }
     writeAtomically(path, [&](const std::filesystem::path& temporary) {

@@ -34,7 +34,8 @@ std::vector<T> readRows(GLuint framebuffer, glm::ivec2 size, GLenum type) {
     // GL rows run bottom to top; images run top to bottom.
     for (int y = 0; y < size.y / 2; ++y) {
         auto top = data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * rowItems);
-        auto bottom = data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(size.y - 1 - y) * rowItems);
+        auto bottom =
+            data.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(size.y - 1 - y) * rowItems);
         std::swap_ranges(top, top + static_cast<std::ptrdiff_t>(rowItems), bottom);
     }
     return data;
@@ -49,6 +50,8 @@ Image RenderTarget::readPixels() const {
     return image;
 }
 
-std::vector<float> RenderTarget::readPixelsFloat() const { return readRows<float>(framebuffer_.id(), size_, GL_FLOAT); }
+std::vector<float> RenderTarget::readPixelsFloat() const {
+    return readRows<float>(framebuffer_.id(), size_, GL_FLOAT);
+}
 
 } // namespace engine

@@ -7,6 +7,8 @@
 #include <engine/Image.h>
 #include <engine/RenderTarget.h>
 
+#include <shadows/ShadowModule.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -26,6 +28,7 @@ struct Options {
     glm::ivec2 size{1024, 768};
     int frames = 5;
     std::vector<std::string> modules;
+    std::optional<shadows::ShadowSettings> shadows;
 };
 
 constexpr const char* kUsage = R"(usage: gs-render [options]
@@ -36,6 +39,12 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --size WxH       image size in pixels, 1..16384 each            [1024x768]
   --frames N       frames to time after one warm-up frame, 1..1000 [5]
   --module NAME    load engine module NAME (repeatable)
+  --technique NAME shadows with this technique (hard, slope-scaled, hw-pcf, pcf, gsm, pcf-gsm-naive,
+                   pcf-gsm-point, pcf-gsm-average, pcf-gsm-quadratic, receiver-plane, normal-offset, none)
+                                                                  [pcf-gsm-average]
+  --shadow-size N  shadow map resolution, 64..16384               [2048]
+  --depth-format F d16, d24 or d32f                               [d24]
+  --debug-view V   none, texels, gradient, bias, visibility, shadow-map [none]
   --help           this text)";
 
 [[noreturn]] void usageError(const std::string& message) {
@@ -60,6 +69,7 @@ int parseInt(const std::string& option, const std::string& text, int low, int hi
 
 Options parse(int argc, char** argv) {
     Options options;
+    options.shadows = shadows::ShadowSettings{};
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> std::string {
@@ -91,6 +101,32 @@ Options parse(int argc, char** argv) {
             options.frames = parseInt("--frames", value(), 1, 1000);
         } else if (arg == "--module") {
             options.modules.push_back(value());
+        } else if (arg == "--technique") {
+            const std::string name = value();
+            if (name == "none") {
+                options.shadows.reset();
+            } else if (const auto technique = shadows::techniqueFromString(name);
+                       technique && options.shadows) {
+                options.shadows->technique = *technique;
+            } else if (!technique) {
+                usageError("--technique: unknown technique '" + name + "'");
+            }
+        } else if (arg == "--shadow-size" && options.shadows) {
+            options.shadows->resolution = parseInt("--shadow-size", value(), 64, 16384);
+        } else if (arg == "--depth-format" && options.shadows) {
+            const std::string name = value();
+            const auto format = shadows::depthFormatFromString(name);
+            if (!format) {
+                usageError("--depth-format: unknown format '" + name + "' (d16, d24, d32f)");
+            }
+            options.shadows->depthFormat = *format;
+        } else if (arg == "--debug-view" && options.shadows) {
+            const std::string name = value();
+            const auto view = shadows::debugViewFromString(name);
+            if (!view) {
+                usageError("--debug-view: unknown view '" + name + "'");
+            }
+            options.shadows->debugView = *view;
         } else {
             usageError("unknown option '" + arg + "'");
         }
@@ -140,6 +176,9 @@ int main(int argc, char** argv) {
         }
         engine::HeadlessContext context;
         engine::Engine engine;
+        if (options.shadows) {
+            engine.addModule(std::make_unique<shadows::ShadowModule>(*options.shadows));
+        }
         for (const std::string& name : options.modules) {
             engine.loadModule(name);
         }
@@ -178,6 +217,8 @@ int main(int argc, char** argv) {
                << "  \"drawCalls\": " << stats.drawCalls << ",\n"
                << "  \"triangles\": " << stats.triangles << ",\n"
                << "  \"programsCompiled\": " << engine.programs().compileCount() << ",\n"
+               << "  \"shadowTechnique\": \""
+               << (options.shadows ? shadows::toString(options.shadows->technique) : "none") << "\",\n"
                << "  \"modules\": [";
         for (std::size_t i = 0; i < options.modules.size(); ++i) {
             report << (i ? ", " : "") << '"' << jsonEscape(options.modules[i]) << '"';

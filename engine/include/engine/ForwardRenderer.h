@@ -19,6 +19,10 @@ struct FrameStats {
     std::size_t triangles = 0;
 };
 
+/// @brief What the lighting pass writes: the shaded colour, or surface data for measurements (use a float
+/// RenderTarget for those).
+enum class OutputMode { Shaded, WorldPosition, WorldNormal };
+
 /// @brief Scene-wide lighting environment.
 struct LightingEnvironment {
     /// Linear ambient colour multiplied by each surface's base colour. Default 0.08 grey.
@@ -51,6 +55,8 @@ public:
     FrameStats lightingPass(const FrameContext& frame, std::span<Module* const> modules);
 
     LightingEnvironment environment;
+    /// Output of the lighting pass. Default Shaded.
+    OutputMode output = OutputMode::Shaded;
 
 private:
     struct GpuMesh {
@@ -65,6 +71,8 @@ private:
     ProgramCache& programs_;
     ShaderVariantKey flatNormalsFlag_;
     ShaderVariantKey spotLightsFlag_;
+    ShaderVariantKey worldPositionFlag_;
+    ShaderVariantKey worldNormalFlag_;
     gl::Buffer frameBlock_;
     bool sceneHasSpotLights_ = false;
     // Keyed by the mesh pointer; the shared_ptr keeps the key alive as long as its GPU copy.

@@ -128,6 +128,9 @@ void Program::set(std::string_view name, const glm::vec3& v) const {
 void Program::set(std::string_view name, const glm::vec4& v) const {
     glProgramUniform4fv(id(), uniformLocation(name), 1, glm::value_ptr(v));
 }
+void Program::set(std::string_view name, const glm::mat2& m) const {
+    glProgramUniformMatrix2fv(id(), uniformLocation(name), 1, GL_FALSE, glm::value_ptr(m));
+}
 void Program::set(std::string_view name, const glm::mat3& m) const {
     glProgramUniformMatrix3fv(id(), uniformLocation(name), 1, GL_FALSE, glm::value_ptr(m));
 }

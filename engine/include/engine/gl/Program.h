@@ -2,6 +2,7 @@
 
 #include <engine/gl/GlObject.h>
 
+#include <glm/mat2x2.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -45,6 +46,7 @@ public:
     void set(std::string_view name, const glm::vec2& value) const;
     void set(std::string_view name, const glm::vec3& value) const;
     void set(std::string_view name, const glm::vec4& value) const;
+    void set(std::string_view name, const glm::mat2& value) const;
     void set(std::string_view name, const glm::mat3& value) const;
     void set(std::string_view name, const glm::mat4& value) const;
 

@@ -1,0 +1,464 @@
+#include <shadows/ShadowModule.h>
+
+#include <engine/ForwardRenderer.h>
+#include <engine/ProgramCache.h>
+#include <engine/gl/Program.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <span>
+#include <stdexcept>
+
+std::span<const engine::EmbeddedShaderFile> gsShadowShaders();
+
+namespace shadows {
+
+namespace {
+
+constexpr int kMaxMaps = 4; // GS_SHADOW_MAX_MAPS in receiver.glsl
+const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
+
+GLenum glDepthFormat(DepthFormat format) {
+    switch (format) {
+    case DepthFormat::D16:
+        return GL_DEPTH_COMPONENT16;
+    case DepthFormat::D24:
+        return GL_DEPTH_COMPONENT24;
+    case DepthFormat::D32F:
+        return GL_DEPTH_COMPONENT32F;
+    }
+    return GL_DEPTH_COMPONENT24;
+}
+
+std::size_t bytesPerDepthTexel(DepthFormat format) {
+    return format == DepthFormat::D16 ? 2 : 4;
+}
+
+bool isPcfGsm(ShadowTechnique technique) {
+    return technique == ShadowTechnique::PcfGsmNaive || technique == ShadowTechnique::PcfGsmPointGradient ||
+           technique == ShadowTechnique::PcfGsmAverageGradient ||
+           technique == ShadowTechnique::PcfGsmQuadratic;
+}
+
+/// Techniques whose fuzzy width or correction reads a per-fragment gradient.
+bool usesPointGradient(ShadowTechnique technique) {
+    return technique == ShadowTechnique::Gsm || technique == ShadowTechnique::PcfGsmNaive ||
+           technique == ShadowTechnique::PcfGsmPointGradient;
+}
+
+engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filter, bool compare) {
+    GLuint name = 0;
+    glCreateSamplers(1, &name);
+    glSamplerParameteri(name, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+    glSamplerParameteri(name, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+    // Outside the map counts as unoccluded: a border at the far plane.
+    glSamplerParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    glSamplerParameterfv(name, GL_TEXTURE_BORDER_COLOR, border);
+    if (compare) {
+        glSamplerParameteri(name, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glSamplerParameteri(name, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL); // lit when reference <= stored
+    }
+    return engine::gl::GlObject<engine::gl::detail::deleteSampler>(name);
+}
+
+} // namespace
+
+struct ShadowModule::ShadowMap {
+    ShadowMap(int resolution, DepthFormat format, bool withGradient)
+        : depth(glDepthFormat(format), glm::ivec2(resolution)), framebuffer("shadow map") {
+        framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+        if (withGradient) {
+            gradient.emplace(GL_RG32F, glm::ivec2(resolution));
+            framebuffer.attach(GL_COLOR_ATTACHMENT0, *gradient);
+            framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        } else {
+            framebuffer.setDrawBuffers({});
+        }
+        framebuffer.check();
+    }
+
+    int lightIndex = -1;
+    LightProjection projection;
+    engine::gl::Texture depth;
+    std::optional<engine::gl::Texture> gradient;
+    engine::gl::Framebuffer framebuffer;
+};
+
+struct ShadowModule::Flags {
+    explicit Flags(engine::ModuleHost& host)
+        : shadows(host.variantFlag("GS_SHADOWS")), compare(host.variantFlag("GS_SHADOW_SAMPLER_COMPARE")),
+          gradientStored(host.variantFlag("GS_SHADOW_GRADIENT_STORED")),
+          gradientCentral(host.variantFlag("GS_SHADOW_GRADIENT_CENTRAL")),
+          gradientScreen(host.variantFlag("GS_SHADOW_GRADIENT_SCREEN")),
+          singleCompare(host.variantFlag("GS_SHADOW_SINGLE_COMPARE")), pcf(host.variantFlag("GS_SHADOW_PCF")),
+          gsm(host.variantFlag("GS_SHADOW_GSM")), pcfGsm(host.variantFlag("GS_SHADOW_PCF_GSM")),
+          correctionPoint(host.variantFlag("GS_SHADOW_CORRECTION_POINT")),
+          correctionAverage(host.variantFlag("GS_SHADOW_CORRECTION_AVERAGE")),
+          correctionQuadratic(host.variantFlag("GS_SHADOW_CORRECTION_QUADRATIC")),
+          averageCircular8(host.variantFlag("GS_SHADOW_AVG_CIRCULAR8")),
+          averageVec4(host.variantFlag("GS_SHADOW_AVG_VEC4")),
+          receiverPlane(host.variantFlag("GS_SHADOW_RECEIVER_PLANE")),
+          receiverPlanePerTap(host.variantFlag("GS_SHADOW_RPB_PER_TAP")),
+          normalOffset(host.variantFlag("GS_SHADOW_NORMAL_OFFSET")),
+          rotate(host.variantFlag("GS_SHADOW_ROTATE")), floorDepth(host.variantFlag("GS_SHADOW_FLOOR")),
+          debugVisibility(host.variantFlag("GS_SHADOW_DEBUG_VISIBILITY")),
+          debugTexels(host.variantFlag("GS_SHADOW_DEBUG_TEXELS")),
+          debugGradient(host.variantFlag("GS_SHADOW_DEBUG_GRADIENT")),
+          debugBias(host.variantFlag("GS_SHADOW_DEBUG_BIAS")),
+          debugMap(host.variantFlag("GS_SHADOW_DEBUG_MAP")),
+          storeGradient(host.variantFlag("GS_SHADOW_STORE_GRADIENT")) {}
+
+    engine::ShaderVariantKey shadows, compare, gradientStored, gradientCentral, gradientScreen, singleCompare,
+        pcf, gsm, pcfGsm, correctionPoint, correctionAverage, correctionQuadratic, averageCircular8,
+        averageVec4, receiverPlane, receiverPlanePerTap, normalOffset, rotate, floorDepth, debugVisibility,
+        debugTexels, debugGradient, debugBias, debugMap, storeGradient;
+};
+
+struct ShadowModule::Samplers {
+    engine::gl::GlObject<engine::gl::detail::deleteSampler> compareNearest = makeSampler(GL_NEAREST, true);
+    engine::gl::GlObject<engine::gl::detail::deleteSampler> compareLinear = makeSampler(GL_LINEAR, true);
+    engine::gl::GlObject<engine::gl::detail::deleteSampler> depthLinear = makeSampler(GL_LINEAR, false);
+};
+
+ShadowModule::ShadowModule() : ShadowModule(ShadowSettings{}) {}
+
+ShadowModule::ShadowModule(const ShadowSettings& settings) {
+    setSettings(settings);
+}
+
+ShadowModule::~ShadowModule() = default;
+
+void ShadowModule::setSettings(const ShadowSettings& settings) {
+    const std::vector<std::string> problems = settings.validate();
+    if (!problems.empty()) {
+        std::string message = "shadow settings:";
+        for (const std::string& problem : problems) {
+            message += "\n  " + problem;
+        }
+        throw std::invalid_argument(message);
+    }
+    if (settings == settings_ && !dirty_) {
+        return;
+    }
+    settings_ = settings;
+    pattern_ = settings_.tapPattern();
+    dirty_ = true;
+}
+
+ShadowStats ShadowModule::stats() const {
+    ShadowStats stats;
+    stats.shadowMaps = static_cast<int>(maps_.size());
+    const auto texels =
+        static_cast<std::size_t>(settings_.resolution) * static_cast<std::size_t>(settings_.resolution);
+    for (const auto& map : maps_) {
+        stats.bytes += texels * (bytesPerDepthTexel(settings_.depthFormat) + (map->gradient ? 8 : 0));
+    }
+    return stats;
+}
+
+std::optional<LightProjection> ShadowModule::lightProjection(int lightIndex) const {
+    for (const auto& map : maps_) {
+        if (map->lightIndex == lightIndex) {
+            return map->projection;
+        }
+    }
+    return std::nullopt;
+}
+
+void ShadowModule::attach(engine::ModuleHost& host) {
+    host_ = &host;
+    host.shaders().add(gsShadowShaders());
+    flags_ = std::make_unique<Flags>(host);
+    for (int slot = 0; slot < kMaxMaps; ++slot) {
+        mapUnits_.push_back(host.reserveTextureUnit());
+        gradientUnits_.push_back(host.reserveTextureUnit());
+    }
+    dirty_ = true;
+}
+
+void ShadowModule::detach() {
+    releaseResources();
+    samplers_.reset();
+    host_ = nullptr;
+}
+
+void ShadowModule::releaseResources() {
+    maps_.clear();
+    uploadedFrame_.clear();
+}
+
+std::vector<engine::ShaderChunk> ShadowModule::shaderChunks() const {
+    return {{"declarations", "shadows/chunk-declarations",
+             "#ifdef GS_SHADOWS\n#include \"shadows/receiver.glsl\"\n#endif"},
+            {"light_visibility", "shadows/chunk-visibility",
+             "#ifdef GS_SHADOWS\nvisibility *= gsShadowVisibility(lightIndex, vWorldPosition, normal, "
+             "toLight);\n#endif"},
+            {"final_color", "shadows/chunk-debug", "#ifdef GS_SHADOWS\ngsShadowDebug(color);\n#endif"}};
+}
+
+bool ShadowModule::needsGradientTarget() const {
+    return usesPointGradient(settings_.technique) &&
+           settings_.gradientSource == GradientSource::StoredDerivatives;
+}
+
+bool ShadowModule::usesCompareSampler() const {
+    switch (settings_.technique) {
+    case ShadowTechnique::HardCompare:
+    case ShadowTechnique::SlopeScaledBias:
+    case ShadowTechnique::HardwarePcf:
+    case ShadowTechnique::NormalOffset:
+    case ShadowTechnique::Pcf:
+        return true;
+    case ShadowTechnique::ReceiverPlaneBias:
+        return settings_.receiverPlaneKernel == ReceiverPlaneKernel::PerTap;
+    default:
+        return false;
+    }
+}
+
+engine::ShaderVariantKey ShadowModule::lightingKey() const {
+    const Flags& f = *flags_;
+    engine::ShaderVariantKey key = f.shadows;
+    if (usesCompareSampler()) {
+        key |= f.compare;
+    }
+    if (usesPointGradient(settings_.technique)) {
+        switch (settings_.gradientSource) {
+        case GradientSource::StoredDerivatives:
+            key |= f.gradientStored;
+            break;
+        case GradientSource::CentralDifferences:
+            key |= f.gradientCentral;
+            break;
+        case GradientSource::ScreenSpace:
+            key |= f.gradientScreen;
+            break;
+        }
+    }
+    switch (settings_.technique) {
+    case ShadowTechnique::HardCompare:
+    case ShadowTechnique::SlopeScaledBias:
+    case ShadowTechnique::HardwarePcf:
+        key |= f.singleCompare;
+        break;
+    case ShadowTechnique::NormalOffset:
+        key |= f.singleCompare | f.normalOffset;
+        break;
+    case ShadowTechnique::Pcf:
+        key |= f.pcf;
+        break;
+    case ShadowTechnique::Gsm:
+        key |= f.gsm;
+        break;
+    case ShadowTechnique::PcfGsmNaive:
+        key |= f.pcfGsm;
+        break;
+    case ShadowTechnique::PcfGsmPointGradient:
+        key |= f.pcfGsm | f.correctionPoint;
+        break;
+    case ShadowTechnique::PcfGsmAverageGradient:
+        key |= f.pcfGsm | f.correctionAverage;
+        if (settings_.averageGradientForm == AverageGradientForm::Circular8) {
+            key |= f.averageCircular8;
+        } else if (settings_.averageGradientForm == AverageGradientForm::Circular8Vec4) {
+            key |= f.averageVec4;
+        }
+        break;
+    case ShadowTechnique::PcfGsmQuadratic:
+        key |= f.pcfGsm | f.correctionQuadratic;
+        break;
+    case ShadowTechnique::ReceiverPlaneBias:
+        key |= f.receiverPlane;
+        if (settings_.receiverPlaneKernel == ReceiverPlaneKernel::PerTap) {
+            key |= f.receiverPlanePerTap;
+        }
+        break;
+    }
+    const bool patterned = settings_.technique == ShadowTechnique::Pcf || isPcfGsm(settings_.technique) ||
+                           (settings_.technique == ShadowTechnique::ReceiverPlaneBias &&
+                            settings_.receiverPlaneKernel == ReceiverPlaneKernel::PerTap);
+    if (patterned && settings_.pcfRotate) {
+        key |= f.rotate;
+    }
+    if (settings_.floorReceiverDepth) {
+        key |= f.floorDepth;
+    }
+    switch (settings_.debugView) {
+    case ShadowDebugView::None:
+        break;
+    case ShadowDebugView::Visibility:
+        key |= f.debugVisibility;
+        break;
+    case ShadowDebugView::TexelCheckerboard:
+        key |= f.debugTexels;
+        break;
+    case ShadowDebugView::GradientMagnitude:
+        key |= f.debugGradient;
+        break;
+    case ShadowDebugView::Bias:
+        key |= f.debugBias;
+        break;
+    case ShadowDebugView::ShadowMap:
+        key |= f.debugMap;
+        break;
+    }
+    return key;
+}
+
+void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
+    frameIndex_ = frame.frameIndex;
+    if (dirty_) {
+        releaseResources();
+        lightingKey_ = lightingKey();
+        dirty_ = false;
+    }
+    // World bounds of every mesh: receivers for the fit, and casters.
+    std::vector<Aabb> boxes;
+    frame.scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+        if (!entity.mesh || !entity.mesh->mesh) {
+            return;
+        }
+        Aabb local;
+        for (const glm::vec3& p : entity.mesh->mesh->positions) {
+            local.extend(p);
+        }
+        boxes.push_back(local.transformed(frame.scene.worldMatrix(id)));
+    });
+
+    slotOfLight_.assign(engine::ForwardRenderer::kMaxLights, -1);
+    std::size_t used = 0;
+    for (const engine::FrameLight& light : frame.lights) {
+        if (!light.light.castsShadows || used == kMaxMaps) {
+            continue;
+        }
+        const LightProjection projection =
+            light.light.type == engine::LightType::Directional
+                ? fitDirectionalLight(light.direction, frame.viewProjection, boxes, settings_.resolution,
+                                      settings_.texelSnapping)
+                : fitSpotLight(light.position, light.direction, light.light.outerConeAngle, light.light.range,
+                               boxes, settings_.resolution);
+        if (!projection.valid) {
+            continue;
+        }
+        if (used == maps_.size()) {
+            maps_.push_back(std::make_unique<ShadowMap>(settings_.resolution, settings_.depthFormat,
+                                                        needsGradientTarget()));
+        }
+        maps_[used]->lightIndex = light.index;
+        maps_[used]->projection = projection;
+        slotOfLight_[static_cast<std::size_t>(light.index)] = static_cast<int>(used);
+        ++used;
+    }
+    // Lights that stopped casting (or left the view) give their maps back.
+    maps_.resize(used);
+}
+
+void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
+    if (maps_.empty()) {
+        return;
+    }
+    const bool storeGradient = needsGradientTarget();
+    const engine::gl::Program& program =
+        host_->programs().get(kDepthProgram, storeGradient ? flags_->storeGradient : 0);
+    program.use();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_CULL_FACE);
+    glCullFace(settings_.casterFaces == CasterFaces::Front ? GL_BACK : GL_FRONT);
+    if (settings_.technique == ShadowTechnique::SlopeScaledBias) {
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
+    }
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    for (const auto& map : maps_) {
+        map->framebuffer.bind();
+        glViewport(0, 0, settings_.resolution, settings_.resolution);
+        glClearDepth(1.0);
+        if (storeGradient) {
+            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+            glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, zero);
+        }
+        glClear(GL_DEPTH_BUFFER_BIT);
+        program.set("uLightViewProjection", map->projection.projection * map->projection.view);
+        host_->drawMeshes(frame.scene, [&](engine::EntityId, const glm::mat4& model) {
+            program.set("uModel", model);
+            return true;
+        });
+    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_CULL_FACE);
+}
+
+engine::ShaderVariantKey ShadowModule::variantBits(const engine::DrawContext&) const {
+    return maps_.empty() ? 0 : lightingKey_;
+}
+
+void ShadowModule::bindLightingResources(const engine::gl::Program& program, const engine::DrawContext&) {
+    if (maps_.empty()) {
+        return;
+    }
+    if (!samplers_) {
+        samplers_ = std::make_unique<Samplers>();
+    }
+    const GLuint mapSampler = !usesCompareSampler() ? samplers_->depthLinear.id()
+                              : settings_.technique == ShadowTechnique::HardwarePcf
+                                  ? samplers_->compareLinear.id()
+                                  : samplers_->compareNearest.id();
+    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
+        glBindTextureUnit(mapUnits_[slot], maps_[slot]->depth.id());
+        glBindSampler(mapUnits_[slot], mapSampler);
+        if (maps_[slot]->gradient) {
+            glBindTextureUnit(gradientUnits_[slot], maps_[slot]->gradient->id());
+            glBindSampler(gradientUnits_[slot], samplers_->depthLinear.id());
+        }
+    }
+    auto& uploaded = uploadedFrame_[program.id()];
+    if (uploaded == frameIndex_ + 1) {
+        return; // this program already holds this frame's uniforms
+    }
+    uploaded = frameIndex_ + 1;
+
+    const GLuint id = program.id();
+    glProgramUniform1iv(id, program.uniformLocation("gsShadowSlot"),
+                        static_cast<GLsizei>(slotOfLight_.size()), slotOfLight_.data());
+    std::vector<glm::mat4> matrices(kMaxMaps, glm::mat4(1.0f));
+    std::vector<glm::vec4> texels(kMaxMaps, glm::vec4(0.0f));
+    const float resolution = static_cast<float>(settings_.resolution);
+    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
+        const LightProjection& projection = maps_[slot]->projection;
+        matrices[slot] = projection.worldToShadow;
+        texels[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
+                                 projection.perspective ? 1.0f : 0.0f);
+    }
+    glProgramUniformMatrix4fv(id, program.uniformLocation("gsShadowMatrix"), kMaxMaps, GL_FALSE,
+                              glm::value_ptr(matrices[0]));
+    glProgramUniform4fv(id, program.uniformLocation("gsShadowTexel"), kMaxMaps, glm::value_ptr(texels[0]));
+    const std::vector<GLint> mapUnits(mapUnits_.begin(), mapUnits_.end());
+    const std::vector<GLint> gradientUnits(gradientUnits_.begin(), gradientUnits_.end());
+    glProgramUniform1iv(id, program.uniformLocation("gsShadowMap"), kMaxMaps, mapUnits.data());
+    if (const GLint location = program.uniformLocation("gsShadowGradientMap"); location >= 0) {
+        glProgramUniform1iv(id, location, kMaxMaps, gradientUnits.data());
+    }
+    program.set("gsShadowConstantBias", settings_.constantBias);
+    program.set("gsShadowDepthStep", depthStep(settings_.depthFormat));
+    program.set("gsShadowFuzzyScale", settings_.fuzzyScale);
+    program.set("gsShadowNormalOffset", settings_.normalOffsetTexels);
+    program.set("gsShadowReceiverPlaneClamp", settings_.receiverPlaneClamp ? 1 : 0);
+    program.set("gsTapCount", static_cast<int>(pattern_.offsets.size()));
+    program.set("gsTapInverseCovariance", pattern_.inverseCovariance);
+    program.set("gsTapDisplace", settings_.pcfRadius / std::sqrt(2.0f));
+    if (const GLint location = program.uniformLocation("gsTapOffsets"); location >= 0) {
+        glProgramUniform2fv(id, location, static_cast<GLsizei>(pattern_.offsets.size()),
+                            glm::value_ptr(pattern_.offsets[0]));
+    }
+    if (const GLint location = program.uniformLocation("gsTapFitRows"); location >= 0) {
+        glProgramUniform1fv(id, location, static_cast<GLsizei>(pattern_.quadraticFitRows.size()),
+                            pattern_.quadraticFitRows.data());
+    }
+}
+
+} // namespace shadows

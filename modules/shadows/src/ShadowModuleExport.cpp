@@ -1,0 +1,3 @@
+#include <shadows/ShadowModule.h>
+
+GS_EXPORT_MODULE("shadows", shadows::ShadowModule)
