@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 using namespace shadows;
@@ -30,9 +31,11 @@ glm::vec3 sunDirection() {
 engine::Scene boxOnPlane(engine::EntityId& camera) {
     engine::Scene scene;
     const auto ground = scene.create("ground");
-    scene.entity(ground).mesh = engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(24.0f, 1))};
+    scene.entity(ground).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(24.0f, 1))};
     const auto box = scene.create("box");
-    scene.entity(box).mesh = engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(2.0f))};
+    scene.entity(box).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(2.0f))};
     scene.entity(box).transform.translation = {0.0f, 1.0f, 0.0f};
     const auto sun = scene.create("sun");
     scene.entity(sun).light = engine::LightComponent{};
@@ -99,6 +102,7 @@ struct AccuracyCase {
     ShadowTechnique technique;
     DepthFormat format;
     float constantBias;
+    bool floorReceiverDepth;
     double maxAcne;
     double maxLeak;
     double maxDarkening;
@@ -108,21 +112,44 @@ struct AccuracyCase {
 // comparisons with a tiny bias are expected to show acne and naive PCF over GSM to darken (that is what the
 // other techniques fix); their thresholds pin that behaviour down too.
 const AccuracyCase kAccuracy[] = {
-    // name, technique, format, constant bias (world), max acne, max leak, max darkening
-    {"hardTinyBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.002f, 0.55, 0.005, 0.55},
-    {"hardLargeBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.05f, 0.005, 0.005, 0.005},
-    {"slopeScaled", ShadowTechnique::SlopeScaledBias, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.005},
-    {"hardwarePcf", ShadowTechnique::HardwarePcf, DepthFormat::D24, 0.05f, 0.005, 0.005, 0.005},
-    {"pcf", ShadowTechnique::Pcf, DepthFormat::D24, 0.05f, 0.005, 0.005, 0.25},
-    {"gsm", ShadowTechnique::Gsm, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.005},
-    {"pcfGsmNaive", ShadowTechnique::PcfGsmNaive, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.45},
-    {"pcfGsmPoint", ShadowTechnique::PcfGsmPointGradient, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.002},
-    {"pcfGsmAverage", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.002},
-    {"pcfGsmQuadratic", ShadowTechnique::PcfGsmQuadratic, DepthFormat::D24, 0.002f, 0.003, 0.005, 0.003},
-    {"receiverPlane", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.005},
-    {"normalOffset", ShadowTechnique::NormalOffset, DepthFormat::D24, 0.002f, 0.005, 0.005, 0.005},
-    {"pcfGsmAverageD16", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D16, 0.002f, 0.005, 0.005, 0.002},
-    {"pcfGsmAverageD32F", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D32F, 0.002f, 0.005, 0.005, 0.002},
+    // name, technique, format, constant bias (world), floor reference, max acne, max leak, max darkening
+    {"hardTinyBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.002f, false, 0.55, 0.005, 0.55},
+    {"hardLargeBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.05f, false, 0.005, 0.005, 0.005},
+    {"slopeScaled", ShadowTechnique::SlopeScaledBias, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.005},
+    {"hardwarePcf", ShadowTechnique::HardwarePcf, DepthFormat::D24, 0.05f, false, 0.005, 0.005, 0.005},
+    {"pcf", ShadowTechnique::Pcf, DepthFormat::D24, 0.05f, false, 0.005, 0.005, 0.25},
+    {"gsm", ShadowTechnique::Gsm, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.005},
+    {"pcfGsmNaive", ShadowTechnique::PcfGsmNaive, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.45},
+    {"pcfGsmPoint", ShadowTechnique::PcfGsmPointGradient, DepthFormat::D24, 0.002f, false, 0.005, 0.005,
+     0.002},
+    {"pcfGsmAverage", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D24, 0.002f, false, 0.005, 0.005,
+     0.002},
+    {"pcfGsmQuadratic", ShadowTechnique::PcfGsmQuadratic, DepthFormat::D24, 0.002f, false, 0.003, 0.005,
+     0.003},
+    {"receiverPlane", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.002f, false, 0.005, 0.005,
+     0.005},
+    {"normalOffset", ShadowTechnique::NormalOffset, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.005},
+    {"pcfGsmAverageD16", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D16, 0.002f, false, 0.005,
+     0.005, 0.002},
+    // Without any bias: a plain comparison self-shadows about half of every lit surface...
+    {"hardD16NoBias", ShadowTechnique::HardCompare, DepthFormat::D16, 0.0f, false, 0.55, 0.005, 0.55},
+    {"hwPcfD16NoBias", ShadowTechnique::HardwarePcf, DepthFormat::D16, 0.0f, false, 0.55, 0.005, 0.55},
+    // ...the receiver plane removes most of it, but the comparison rounds the reference to the format (bias
+    // reference: "SampleCmp must indeed be converting the supplied comparison value to the texture
+    // format")...
+    {"receiverPlaneD16", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D16, 0.0f, false, 0.30, 0.005,
+     0.30},
+    {"receiverPlaneD24", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, false, 0.06, 0.005,
+     0.08},
+    // ...and flooring the reference to the format's step removes that rounding acne entirely for D16. A D24
+    // step
+    // (6e-8) is one float32 ulp at depth 0.5, so the floor computed in float only halves it there.
+    {"receiverPlaneD16Floor", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D16, 0.0f, true, 0.002, 0.005,
+     0.002},
+    {"receiverPlaneD24Floor", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, true, 0.025, 0.005,
+     0.04},
+    {"pcfGsmAverageD32F", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D32F, 0.002f, false, 0.005,
+     0.005, 0.002},
 };
 
 class ShadowAccuracyGLTest : public testing::TestWithParam<AccuracyCase> {};
@@ -137,13 +164,14 @@ TEST_P(ShadowAccuracyGLTest, AcneAndLeakStayUnderMeasuredThresholds) {
     settings.technique = c.technique;
     settings.depthFormat = c.format;
     settings.constantBias = c.constantBias;
+    settings.floorReceiverDepth = c.floorReceiverDepth;
     settings.resolution = 1024;
     const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
     ASSERT_GT(m.texelWorldSize, 0.0f);
     const ShadowErrors errors = measureBoxScene(m, 3.0f * m.texelWorldSize + 0.02f);
     std::cout << "[ measured ] " << c.name << ": acne " << errors.acneRate() << " of " << errors.litPixels
-              << " lit, leak " << errors.leakRate() << " of " << errors.shadowedPixels << " shadowed, darkening "
-              << errors.darkening() << "\n";
+              << " lit, leak " << errors.leakRate() << " of " << errors.shadowedPixels
+              << " shadowed, darkening " << errors.darkening() << "\n";
     EXPECT_GT(errors.litPixels, 10000u);
     EXPECT_GT(errors.shadowedPixels, 2000u);
     EXPECT_LE(errors.acneRate(), c.maxAcne);
@@ -169,3 +197,144 @@ TEST(ShadowReproductionGLTest, NaivePcfOverGsmDarkensLitSurfacesByAboutAHalf) {
 
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowAccuracyGLTest, testing::ValuesIn(kAccuracy),
                          [](const auto& test) { return std::string(test.param.name); });
+
+namespace {
+
+/// Möller–Trumbore: does the segment from `origin` along `direction` hit the triangle (t > 0)?
+bool hitsTriangle(const glm::vec3& origin, const glm::vec3& direction, const glm::vec3& a, const glm::vec3& b,
+                  const glm::vec3& c) {
+    const glm::vec3 e1 = b - a;
+    const glm::vec3 e2 = c - a;
+    const glm::vec3 p = glm::cross(direction, e2);
+    const float det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-12f) {
+        return false;
+    }
+    const float inverse = 1.0f / det;
+    const glm::vec3 s = origin - a;
+    const float u = glm::dot(s, p) * inverse;
+    if (u < 0.0f || u > 1.0f) {
+        return false;
+    }
+    const glm::vec3 q = glm::cross(s, e1);
+    const float v = glm::dot(direction, q) * inverse;
+    if (v < 0.0f || u + v > 1.0f) {
+        return false;
+    }
+    return glm::dot(e2, q) * inverse > 0.0f;
+}
+
+/// The knob scene and the pixels of its concave neck that are truly lit, away from true shadow edges.
+class KnobNeck {
+public:
+    KnobNeck()
+        : loaded_(content::GltfLoader::load(std::filesystem::path(CONTENT_DIR) / "scenes" / "knob.gltf")) {
+        const engine::EntityId knob = *loaded_.scene.find("knob");
+        const engine::MeshData& mesh = *loaded_.scene.entity(knob).mesh->mesh;
+        const glm::mat4 toWorld = loaded_.scene.worldMatrix(knob);
+        for (const std::uint32_t index : mesh.indices) {
+            triangles_.emplace_back(toWorld * glm::vec4(mesh.positions[index], 1.0f));
+        }
+        loaded_.scene.forEach([&](engine::EntityId id, const engine::Entity& e) {
+            if (e.light) {
+                toLight_ = glm::normalize(glm::vec3(loaded_.scene.worldMatrix(id)[2]));
+            }
+        });
+    }
+
+    /// Mean 1 - V of `technique` over the mask (built from the first measurement: geometry only).
+    double darkening(ShadowTechnique technique) {
+        ShadowSettings settings;
+        settings.technique = technique;
+        settings.resolution = 1024;
+        settings.pcfTaps = 5;
+        settings.pcfRadius = 2.0f;
+        const ShadowMeasurement m =
+            ShadowMeasurement::render(loaded_.scene, *loaded_.scene.firstCamera(), settings, {320, 240});
+        if (mask_.empty()) {
+            buildMask(m);
+        }
+        double sum = 0.0;
+        for (const std::size_t i : mask_) {
+            sum += 1.0 - static_cast<double>(m.visibility[i]);
+        }
+        return sum / static_cast<double>(std::max<std::size_t>(mask_.size(), 1));
+    }
+
+    [[nodiscard]] std::size_t pixels() const { return mask_.size(); }
+
+private:
+    bool occluded(const glm::vec3& origin) const {
+        for (std::size_t t = 0; t + 2 < triangles_.size(); t += 3) {
+            if (hitsTriangle(origin, toLight_, triangles_[t], triangles_[t + 1], triangles_[t + 2])) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    void buildMask(const ShadowMeasurement& m) {
+        // Neck: between the base disc and the handle, close to the axis, facing the light. A pixel counts
+        // when it is truly lit and no truly shadowed light-facing pixel lies within kBand pixels (away from
+        // shadow edges).
+        constexpr int kBand = 3;
+        auto facing = [&](std::size_t i) {
+            return m.position[i].w > 0.5f && glm::dot(m.normal[i], toLight_) >= 0.15f;
+        };
+        auto onNeck = [&](std::size_t i) {
+            const glm::vec3 p(m.position[i]);
+            return facing(i) && p.y >= 0.3f && p.y <= 1.0f && glm::length(glm::vec2(p.x, p.z)) <= 0.5f;
+        };
+        std::vector<int> shadowed(m.visibility.size(), -1); // -1 unknown, 0 lit, 1 shadowed
+        auto isShadowed = [&](std::size_t i) {
+            if (shadowed[i] < 0) {
+                shadowed[i] = occluded(glm::vec3(m.position[i]) + 2e-3f * m.normal[i]) ? 1 : 0;
+            }
+            return shadowed[i] == 1;
+        };
+        for (int y = kBand; y < m.size.y - kBand; ++y) {
+            for (int x = kBand; x < m.size.x - kBand; ++x) {
+                const auto i = static_cast<std::size_t>(y * m.size.x + x);
+                if (!onNeck(i) || isShadowed(i)) {
+                    continue;
+                }
+                bool interior = true;
+                for (int dy = -kBand; dy <= kBand && interior; ++dy) {
+                    for (int dx = -kBand; dx <= kBand && interior; ++dx) {
+                        const auto j = static_cast<std::size_t>((y + dy) * m.size.x + x + dx);
+                        interior = !facing(j) || !isShadowed(j);
+                    }
+                }
+                if (interior) {
+                    mask_.push_back(i);
+                }
+            }
+        }
+    }
+
+    content::LoadedScene loaded_;
+    std::vector<glm::vec3> triangles_;
+    glm::vec3 toLight_{0.0f};
+    std::vector<std::size_t> mask_;
+};
+
+} // namespace
+
+TEST(ShadowReproductionGLTest, ConcaveNeckDarkensLeastUnderTheQuadraticFit) {
+    // GSM multisampling reference, Fig. 4.2.5: a PCF area that follows a plane dips into concave surfaces.
+    // The reference suggests the taps' average gradient, and names higher-order derivatives as the obvious
+    // fix. Measured on our smooth (subdivided) knob, the anchored least-squares gradient does not darken
+    // consistently less than the fragment's own gradient (for a locally quadratic surface and a symmetric
+    // pattern the two coincide: the least-squares slope of a parabola is its tangent slope), so the test pins
+    // the ordering that does hold: the quadric darkens far less than either plane. The values are printed for
+    // docs/RESULTS.md.
+    KnobNeck neck;
+    const double point = neck.darkening(ShadowTechnique::PcfGsmPointGradient);
+    const double average = neck.darkening(ShadowTechnique::PcfGsmAverageGradient);
+    const double quadratic = neck.darkening(ShadowTechnique::PcfGsmQuadratic);
+    std::cout << "[ measured ] neck darkening over " << neck.pixels() << " lit interior pixels: point "
+              << point << ", average " << average << ", quadratic " << quadratic << "\n";
+    ASSERT_GT(neck.pixels(), 300u);
+    EXPECT_GT(point, 0.0);
+    EXPECT_LT(quadratic, 0.6 * std::min(point, average));
+}

@@ -25,8 +25,8 @@ struct ShadowMeasurement {
         ShadowMeasurement m;
         m.size = size;
         engine::Engine engine;
-        auto* module =
-            static_cast<shadows::ShadowModule*>(&engine.addModule(std::make_unique<shadows::ShadowModule>(settings)));
+        auto* module = static_cast<shadows::ShadowModule*>(
+            &engine.addModule(std::make_unique<shadows::ShadowModule>(settings)));
         engine::RenderTarget target(size, engine::ColorFormat::Rgba32F);
         engine.renderer().environment.background = glm::vec3(0.0f);
 
@@ -47,7 +47,8 @@ struct ShadowMeasurement {
         }
         const std::size_t count = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
         for (std::size_t i = 0; i < count; ++i) {
-            m.position.emplace_back(positions[4 * i], positions[4 * i + 1], positions[4 * i + 2], positions[4 * i + 3]);
+            m.position.emplace_back(positions[4 * i], positions[4 * i + 1], positions[4 * i + 2],
+                                    positions[4 * i + 3]);
             m.normal.emplace_back(normals[4 * i], normals[4 * i + 1], normals[4 * i + 2]);
             m.visibility.push_back(visibilities[4 * i]);
         }
@@ -59,13 +60,17 @@ struct ShadowMeasurement {
 struct ShadowErrors {
     std::size_t litPixels = 0;
     std::size_t shadowedPixels = 0;
-    std::size_t acne = 0; // truly lit, visibility < 0.5
-    std::size_t leak = 0; // truly shadowed, visibility > 0.5
+    std::size_t acne = 0;      // truly lit, visibility < 0.5
+    std::size_t leak = 0;      // truly shadowed, visibility > 0.5
     double darkeningSum = 0.0; // sum of 1 - visibility over truly lit pixels
 
-    [[nodiscard]] double acneRate() const { return litPixels ? static_cast<double>(acne) / static_cast<double>(litPixels) : 0.0; }
+    [[nodiscard]] double acneRate() const {
+        return litPixels ? static_cast<double>(acne) / static_cast<double>(litPixels) : 0.0;
+    }
     /// Mean light lost over truly lit pixels (the reference's Fig. 4.2.3 darkening).
-    [[nodiscard]] double darkening() const { return litPixels ? darkeningSum / static_cast<double>(litPixels) : 0.0; }
+    [[nodiscard]] double darkening() const {
+        return litPixels ? darkeningSum / static_cast<double>(litPixels) : 0.0;
+    }
     [[nodiscard]] double leakRate() const {
         return shadowedPixels ? static_cast<double>(leak) / static_cast<double>(shadowedPixels) : 0.0;
     }
