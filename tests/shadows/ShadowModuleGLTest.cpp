@@ -1,0 +1,302 @@
+// The shadow module inside the engine: every technique x light type x depth format compiles and renders the
+// knob; resources and variants exist only for what the scene uses; the module also loads as a plugin.
+#include "../engine/GLTestContext.h"
+
+#include <content/GltfLoader.h>
+#include <engine/Engine.h>
+#include <engine/Primitives.h>
+#include <engine/RenderTarget.h>
+#include <shadows/ShadowModule.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace shadows;
+
+namespace {
+
+content::LoadedScene knob(engine::LightType lightType) {
+    content::SceneLoadOptions options;
+    options.subdivisionLevel = 2; // enough curvature, fewer triangles for the 100+ renders below
+    content::LoadedScene loaded =
+        content::GltfLoader::load(std::filesystem::path(CONTENT_DIR) / "scenes" / "knob.gltf", options);
+    if (lightType == engine::LightType::Spot) {
+        loaded.scene.forEach([&](engine::EntityId id, const engine::Entity& e) {
+            if (e.light) {
+                engine::Entity& light = loaded.scene.entity(id);
+                light.light->type = engine::LightType::Spot;
+                light.light->intensity = 40.0f;
+                light.light->outerConeAngle = 0.5f;
+                light.light->innerConeAngle = 0.4f;
+                light.transform = engine::Transform::lookAt({3.0f, 4.0f, 2.0f}, {0.0f, 0.5f, 0.0f});
+            }
+        });
+    }
+    return loaded;
+}
+
+/// Renders and returns the shadow visibility of light 0 per pixel (debug view), checking it is finite in
+/// [0,1].
+std::vector<float> visibility(engine::Engine& engine, ShadowModule& module, const engine::Scene& scene,
+                              ShadowSettings settings) {
+    settings.debugView = ShadowDebugView::Visibility;
+    module.setSettings(settings);
+    engine::RenderTarget target({96, 72}, engine::ColorFormat::Rgba32F);
+    engine.renderFrame(scene, *scene.firstCamera(), target);
+    const std::vector<float> rgba = target.readPixelsFloat();
+    std::vector<float> values;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) {
+        values.push_back(rgba[i]);
+    }
+    return values;
+}
+
+struct VariantCase {
+    std::string name;
+    ShadowSettings settings;
+};
+
+std::vector<VariantCase> everyTechniqueLightAndFormat() {
+    std::vector<VariantCase> cases;
+    for (const ShadowTechnique technique : allTechniques()) {
+        for (const DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+            ShadowSettings settings;
+            settings.technique = technique;
+            settings.depthFormat = format;
+            settings.resolution = 256;
+            std::string name(toString(technique));
+            name += "_";
+            name += toString(format);
+            std::replace(name.begin(), name.end(), '-', '_');
+            cases.push_back({name, settings});
+        }
+    }
+    // Options that change the shader variant.
+    auto with = [&](const std::string& name, auto change) {
+        ShadowSettings settings;
+        settings.resolution = 256;
+        change(settings);
+        cases.push_back({name, settings});
+    };
+    for (const GradientSource source : {GradientSource::StoredDerivatives, GradientSource::CentralDifferences,
+                                        GradientSource::ScreenSpace}) {
+        with(std::string("gsm_gradient_") + std::string(toString(source)), [&](ShadowSettings& s) {
+            s.technique = ShadowTechnique::Gsm;
+            s.gradientSource = source;
+        });
+        with(std::string("point_gradient_") + std::string(toString(source)), [&](ShadowSettings& s) {
+            s.technique = ShadowTechnique::PcfGsmPointGradient;
+            s.gradientSource = source;
+        });
+    }
+    with("average_circular8",
+         [](ShadowSettings& s) { s.averageGradientForm = AverageGradientForm::Circular8; });
+    with("average_circular8_vec4",
+         [](ShadowSettings& s) { s.averageGradientForm = AverageGradientForm::Circular8Vec4; });
+    with("average_poisson64_rotated", [](ShadowSettings& s) {
+        s.pcfLayout = TapLayout::Poisson;
+        s.pcfTaps = 64;
+        s.pcfRadius = 3.0f;
+        s.pcfRotate = true;
+    });
+    with("quadratic_grid8", [](ShadowSettings& s) {
+        s.technique = ShadowTechnique::PcfGsmQuadratic;
+        s.pcfTaps = 8;
+        s.pcfRadius = 3.5f;
+    });
+    with("pcf_poisson_rotated", [](ShadowSettings& s) {
+        s.technique = ShadowTechnique::Pcf;
+        s.pcfLayout = TapLayout::Poisson;
+        s.pcfTaps = 32;
+        s.pcfRotate = true;
+    });
+    with("receiver_plane_per_tap", [](ShadowSettings& s) {
+        s.technique = ShadowTechnique::ReceiverPlaneBias;
+        s.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
+        s.receiverPlaneClamp = false;
+    });
+    with("hard_floor_back_faces", [](ShadowSettings& s) {
+        s.technique = ShadowTechnique::HardCompare;
+        s.floorReceiverDepth = true;
+        s.casterFaces = CasterFaces::Back;
+    });
+    return cases;
+}
+
+class ShadowVariantGLTest : public testing::TestWithParam<VariantCase> {};
+
+} // namespace
+
+TEST_P(ShadowVariantGLTest, RendersKnobWithDirectionalAndSpotLights) {
+    glTestContext();
+    for (const engine::LightType lightType : {engine::LightType::Directional, engine::LightType::Spot}) {
+        const content::LoadedScene loaded = knob(lightType);
+        engine::Engine engine;
+        auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>()));
+        const std::vector<float> values = visibility(engine, module, loaded.scene, GetParam().settings);
+        EXPECT_EQ(module.stats().shadowMaps, 1);
+        std::size_t shadowed = 0;
+        for (const float v : values) {
+            ASSERT_TRUE(std::isfinite(v));
+            ASSERT_GE(v, 0.0f);
+            ASSERT_LE(v, 1.0f);
+            shadowed += v < 0.5f;
+        }
+        // The knob's own shadow on the ground is always in view.
+        EXPECT_GT(shadowed, values.size() / 50)
+            << (lightType == engine::LightType::Spot ? "spot" : "directional");
+        // Normal shading of the same variant compiles and draws too.
+        ShadowSettings shaded = GetParam().settings;
+        module.setSettings(shaded);
+        engine::RenderTarget target({96, 72});
+        EXPECT_NO_THROW(engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Variants, ShadowVariantGLTest, testing::ValuesIn(everyTechniqueLightAndFormat()),
+                         [](const auto& test) { return test.param.name; });
+
+TEST(ShadowModuleGLTest, DebugViewsCompileAndDiffer) {
+    glTestContext();
+    const content::LoadedScene loaded = knob(engine::LightType::Directional);
+    engine::Engine engine;
+    ShadowSettings settings;
+    settings.resolution = 256;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    std::vector<std::vector<std::uint8_t>> images;
+    for (const ShadowDebugView view :
+         {ShadowDebugView::None, ShadowDebugView::TexelCheckerboard, ShadowDebugView::GradientMagnitude,
+          ShadowDebugView::Bias, ShadowDebugView::Visibility, ShadowDebugView::ShadowMap}) {
+        settings.debugView = view;
+        settings.technique = view == ShadowDebugView::Bias ? ShadowTechnique::ReceiverPlaneBias
+                                                           : ShadowTechnique::PcfGsmAverageGradient;
+        settings.gradientSource = GradientSource::ScreenSpace;
+        module.setSettings(settings);
+        engine::RenderTarget target({64, 48});
+        engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+        images.push_back(target.readPixels().pixels);
+    }
+    for (std::size_t a = 0; a < images.size(); ++a) {
+        for (std::size_t b = a + 1; b < images.size(); ++b) {
+            EXPECT_NE(images[a], images[b]) << "debug views " << a << " and " << b << " look the same";
+        }
+    }
+}
+
+TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
+    glTestContext();
+    engine::Scene scene;
+    const auto ground = scene.create("ground");
+    scene.entity(ground).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(10, 1))};
+    const auto box = scene.create("box");
+    scene.entity(box).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(1))};
+    scene.entity(box).transform.translation = {0, 0.5f, 0};
+    const auto camera = scene.create("camera");
+    scene.entity(camera).camera = engine::CameraComponent{};
+    scene.entity(camera).transform = engine::Transform::lookAt({0, 5, 6}, {0, 0, 0});
+
+    engine::Engine engine;
+    ShadowSettings settings;
+    settings.resolution = 128;
+    settings.depthFormat = DepthFormat::D16;
+    settings.technique = ShadowTechnique::HardCompare;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    engine::RenderTarget target({32, 32});
+
+    // No lights: no maps, no shadow variant, no depth program.
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().shadowMaps, 0);
+    EXPECT_EQ(module.stats().bytes, 0u);
+    EXPECT_EQ(engine.programs().compileCount(), 1u);
+
+    // A light that does not cast shadows changes nothing.
+    const auto lamp = scene.create("lamp");
+    scene.entity(lamp).light = engine::LightComponent{};
+    scene.entity(lamp).light->castsShadows = false;
+    scene.entity(lamp).transform = engine::Transform::lookAt({2, 5, 1}, {0, 0, 0});
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().shadowMaps, 0);
+
+    // Two casting lights: two D16 maps, one lighting variant plus the depth program.
+    for (const char* name : {"sun", "moon"}) {
+        const auto light = scene.create(name);
+        scene.entity(light).light = engine::LightComponent{};
+        scene.entity(light).transform =
+            engine::Transform::lookAt({-2, 5, std::string(name) == "sun" ? 1.0f : -1.0f}, {0, 0, 0});
+    }
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().shadowMaps, 2);
+    EXPECT_EQ(module.stats().bytes, 2u * 128u * 128u * 2u);
+    EXPECT_EQ(engine.programs().compileCount(), 3u);
+    EXPECT_EQ(module.lightProjection(0), std::nullopt); // the lamp casts no shadow
+    EXPECT_TRUE(module.lightProjection(1).has_value());
+
+    // One stops casting: its map is released.
+    scene.entity(*scene.find("moon")).light->castsShadows = false;
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().shadowMaps, 1);
+
+    // Stored gradients allocate their RG32F target only when a technique reads them; settings apply lazily.
+    settings.technique = ShadowTechnique::Gsm;
+    settings.gradientSource = GradientSource::StoredDerivatives;
+    module.setSettings(settings);
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().bytes, 128u * 128u * (2u + 8u));
+    settings.gradientSource = GradientSource::CentralDifferences;
+    module.setSettings(settings);
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().bytes, 128u * 128u * 2u);
+}
+
+TEST(ShadowModuleGLTest, LoadsAsAPluginAndCastsShadows) {
+    glTestContext();
+    const content::LoadedScene loaded = knob(engine::LightType::Directional);
+    engine::Engine plain;
+    engine::RenderTarget target({96, 72});
+    plain.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    const engine::Image without = target.readPixels();
+
+    engine::Engine withPlugin;
+    engine::Module& module = withPlugin.loadModule("shadows");
+    EXPECT_EQ(module.name(), "shadows");
+    withPlugin.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    const engine::Image with = target.readPixels();
+    std::size_t darker = 0;
+    for (std::size_t i = 0; i < with.pixels.size(); i += 4) {
+        darker += with.pixels[i] + 20 < without.pixels[i];
+    }
+    EXPECT_GT(darker, with.pixels.size() / 4 / 50); // the knob's shadow on the ground
+}
+
+TEST(ShadowSettingsTest, InvalidSettingsNameEveryBadField) {
+    ShadowSettings settings;
+    settings.resolution = 32;
+    settings.pcfRadius = -1.0f;
+    settings.fuzzyScale = std::nanf("");
+    settings.pcfTaps = 12;
+    const auto problems = settings.validate();
+    ASSERT_EQ(problems.size(), 4u);
+    try {
+        ShadowModule module(settings);
+        FAIL();
+    } catch (const std::invalid_argument& error) {
+        const std::string message = error.what();
+        for (const char* field : {"resolution", "pcfRadius", "fuzzyScale", "pcfTaps"}) {
+            EXPECT_NE(message.find(field), std::string::npos) << message;
+        }
+    }
+}
+
+TEST(ShadowSettingsTest, NamesRoundTrip) {
+    for (const ShadowTechnique technique : allTechniques()) {
+        EXPECT_EQ(techniqueFromString(toString(technique)), technique);
+    }
+    EXPECT_EQ(allTechniques().size(), 11u);
+    EXPECT_FALSE(techniqueFromString("shadow-volumes"));
+    EXPECT_EQ(depthFormatFromString("d16"), DepthFormat::D16);
+    EXPECT_FALSE(depthFormatFromString("d8"));
+}
