@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
-# The main job: renders every content scene headless (the default scene, knob, first) and writes images plus a
-# report per scene to out/<scene>/ (or $1/<scene>/).
+# The main job: renders the default scene (knob) headless with every shadow technique, and every content scene
+# with the default technique, into out/ (or $1), then writes out/report.md summarising what was rendered.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out}
 bash tools/setup.sh
 cmake --preset default >/dev/null
 cmake --build --preset default --target gs-render
-for scene in knob torus bowl thin-shell crease-cube grazing-plane spheres; do
-    ./build/bin/gs-render --scene "$scene" --out "$out/$scene"
+render=./build/bin/gs-render
+techniques=(hard slope-scaled hw-pcf pcf gsm pcf-gsm-naive pcf-gsm-point pcf-gsm-average pcf-gsm-quadratic
+            receiver-plane normal-offset)
+for technique in "${techniques[@]}"; do
+    "$render" --scene knob --technique "$technique" --out "$out/knob/$technique"
 done
-cat "$out/knob/report.json"
+for scene in torus bowl thin-shell crease-cube grazing-plane spheres; do
+    "$render" --scene "$scene" --out "$out/scenes/$scene"
+done
+python3 tools/demo_report.py "$out" > "$out/report.md.tmp" && mv "$out/report.md.tmp" "$out/report.md"
+cat "$out/report.md"
