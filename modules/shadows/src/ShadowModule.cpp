@@ -1,4 +1,5 @@
 #include <shadows/ShadowModule.h>
+#include <shadows/ShadowTechniqueTraits.h>
 
 #include <engine/ForwardRenderer.h>
 #include <engine/ProgramCache.h>
@@ -33,18 +34,6 @@ GLenum glDepthFormat(DepthFormat format) {
 
 std::size_t bytesPerDepthTexel(DepthFormat format) {
     return format == DepthFormat::D16 ? 2 : 4;
-}
-
-bool isPcfGsm(ShadowTechnique technique) {
-    return technique == ShadowTechnique::PcfGsmNaive || technique == ShadowTechnique::PcfGsmPointGradient ||
-           technique == ShadowTechnique::PcfGsmAverageGradient ||
-           technique == ShadowTechnique::PcfGsmQuadratic;
-}
-
-/// Techniques whose fuzzy width or correction reads a per-fragment gradient.
-bool usesPointGradient(ShadowTechnique technique) {
-    return technique == ShadowTechnique::Gsm || technique == ShadowTechnique::PcfGsmNaive ||
-           technique == ShadowTechnique::PcfGsmPointGradient;
 }
 
 engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filter, bool compare) {
@@ -85,36 +74,6 @@ struct ShadowModule::ShadowMap {
     engine::gl::Texture depth;
     std::optional<engine::gl::Texture> gradient;
     engine::gl::Framebuffer framebuffer;
-};
-
-struct ShadowModule::Flags {
-    explicit Flags(engine::ModuleHost& host)
-        : shadows(host.variantFlag("GS_SHADOWS")), compare(host.variantFlag("GS_SHADOW_SAMPLER_COMPARE")),
-          gradientStored(host.variantFlag("GS_SHADOW_GRADIENT_STORED")),
-          gradientCentral(host.variantFlag("GS_SHADOW_GRADIENT_CENTRAL")),
-          gradientScreen(host.variantFlag("GS_SHADOW_GRADIENT_SCREEN")),
-          singleCompare(host.variantFlag("GS_SHADOW_SINGLE_COMPARE")), pcf(host.variantFlag("GS_SHADOW_PCF")),
-          gsm(host.variantFlag("GS_SHADOW_GSM")), pcfGsm(host.variantFlag("GS_SHADOW_PCF_GSM")),
-          correctionPoint(host.variantFlag("GS_SHADOW_CORRECTION_POINT")),
-          correctionAverage(host.variantFlag("GS_SHADOW_CORRECTION_AVERAGE")),
-          correctionQuadratic(host.variantFlag("GS_SHADOW_CORRECTION_QUADRATIC")),
-          averageCircular8(host.variantFlag("GS_SHADOW_AVG_CIRCULAR8")),
-          averageVec4(host.variantFlag("GS_SHADOW_AVG_VEC4")),
-          receiverPlane(host.variantFlag("GS_SHADOW_RECEIVER_PLANE")),
-          receiverPlanePerTap(host.variantFlag("GS_SHADOW_RPB_PER_TAP")),
-          normalOffset(host.variantFlag("GS_SHADOW_NORMAL_OFFSET")),
-          rotate(host.variantFlag("GS_SHADOW_ROTATE")), floorDepth(host.variantFlag("GS_SHADOW_FLOOR")),
-          debugVisibility(host.variantFlag("GS_SHADOW_DEBUG_VISIBILITY")),
-          debugTexels(host.variantFlag("GS_SHADOW_DEBUG_TEXELS")),
-          debugGradient(host.variantFlag("GS_SHADOW_DEBUG_GRADIENT")),
-          debugBias(host.variantFlag("GS_SHADOW_DEBUG_BIAS")),
-          debugMap(host.variantFlag("GS_SHADOW_DEBUG_MAP")),
-          storeGradient(host.variantFlag("GS_SHADOW_STORE_GRADIENT")) {}
-
-    engine::ShaderVariantKey shadows, compare, gradientStored, gradientCentral, gradientScreen, singleCompare,
-        pcf, gsm, pcfGsm, correctionPoint, correctionAverage, correctionQuadratic, averageCircular8,
-        averageVec4, receiverPlane, receiverPlanePerTap, normalOffset, rotate, floorDepth, debugVisibility,
-        debugTexels, debugGradient, debugBias, debugMap, storeGradient;
 };
 
 struct ShadowModule::Samplers {
@@ -171,7 +130,6 @@ std::optional<LightProjection> ShadowModule::lightProjection(int lightIndex) con
 void ShadowModule::attach(engine::ModuleHost& host) {
     host_ = &host;
     host.shaders().add(gsShadowShaders());
-    flags_ = std::make_unique<Flags>(host);
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         mapUnits_.push_back(host.reserveTextureUnit());
         gradientUnits_.push_back(host.reserveTextureUnit());
@@ -200,110 +158,14 @@ std::vector<engine::ShaderChunk> ShadowModule::shaderChunks() const {
 }
 
 bool ShadowModule::needsGradientTarget() const {
-    return usesPointGradient(settings_.technique) &&
+    return techniqueTraits(settings_).readsPointGradient &&
            settings_.gradientSource == GradientSource::StoredDerivatives;
 }
 
-bool ShadowModule::usesCompareSampler() const {
-    switch (settings_.technique) {
-    case ShadowTechnique::HardCompare:
-    case ShadowTechnique::SlopeScaledBias:
-    case ShadowTechnique::HardwarePcf:
-    case ShadowTechnique::NormalOffset:
-    case ShadowTechnique::Pcf:
-        return true;
-    case ShadowTechnique::ReceiverPlaneBias:
-        return settings_.receiverPlaneKernel == ReceiverPlaneKernel::PerTap;
-    default:
-        return false;
-    }
-}
-
 engine::ShaderVariantKey ShadowModule::lightingKey() const {
-    const Flags& f = *flags_;
-    engine::ShaderVariantKey key = f.shadows;
-    if (usesCompareSampler()) {
-        key |= f.compare;
-    }
-    if (usesPointGradient(settings_.technique)) {
-        switch (settings_.gradientSource) {
-        case GradientSource::StoredDerivatives:
-            key |= f.gradientStored;
-            break;
-        case GradientSource::CentralDifferences:
-            key |= f.gradientCentral;
-            break;
-        case GradientSource::ScreenSpace:
-            key |= f.gradientScreen;
-            break;
-        }
-    }
-    switch (settings_.technique) {
-    case ShadowTechnique::HardCompare:
-    case ShadowTechnique::SlopeScaledBias:
-    case ShadowTechnique::HardwarePcf:
-        key |= f.singleCompare;
-        break;
-    case ShadowTechnique::NormalOffset:
-        key |= f.singleCompare | f.normalOffset;
-        break;
-    case ShadowTechnique::Pcf:
-        key |= f.pcf;
-        break;
-    case ShadowTechnique::Gsm:
-        key |= f.gsm;
-        break;
-    case ShadowTechnique::PcfGsmNaive:
-        key |= f.pcfGsm;
-        break;
-    case ShadowTechnique::PcfGsmPointGradient:
-        key |= f.pcfGsm | f.correctionPoint;
-        break;
-    case ShadowTechnique::PcfGsmAverageGradient:
-        key |= f.pcfGsm | f.correctionAverage;
-        if (settings_.averageGradientForm == AverageGradientForm::Circular8) {
-            key |= f.averageCircular8;
-        } else if (settings_.averageGradientForm == AverageGradientForm::Circular8Vec4) {
-            key |= f.averageVec4;
-        }
-        break;
-    case ShadowTechnique::PcfGsmQuadratic:
-        key |= f.pcfGsm | f.correctionQuadratic;
-        break;
-    case ShadowTechnique::ReceiverPlaneBias:
-        key |= f.receiverPlane;
-        if (settings_.receiverPlaneKernel == ReceiverPlaneKernel::PerTap) {
-            key |= f.receiverPlanePerTap;
-        }
-        break;
-    }
-    const bool patterned = settings_.technique == ShadowTechnique::Pcf || isPcfGsm(settings_.technique) ||
-                           (settings_.technique == ShadowTechnique::ReceiverPlaneBias &&
-                            settings_.receiverPlaneKernel == ReceiverPlaneKernel::PerTap);
-    if (patterned && settings_.pcfRotate) {
-        key |= f.rotate;
-    }
-    if (settings_.floorReceiverDepth) {
-        key |= f.floorDepth;
-    }
-    switch (settings_.debugView) {
-    case ShadowDebugView::None:
-        break;
-    case ShadowDebugView::Visibility:
-        key |= f.debugVisibility;
-        break;
-    case ShadowDebugView::TexelCheckerboard:
-        key |= f.debugTexels;
-        break;
-    case ShadowDebugView::GradientMagnitude:
-        key |= f.debugGradient;
-        break;
-    case ShadowDebugView::Bias:
-        key |= f.debugBias;
-        break;
-    case ShadowDebugView::ShadowMap:
-        key |= f.debugMap;
-        break;
+    engine::ShaderVariantKey key = 0;
+    for (const std::string_view define : lightingDefines(settings_)) {
+        key |= host_->variantFlag(define);
     }
     return key;
 }
@@ -361,15 +223,15 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         return;
     }
     const bool storeGradient = needsGradientTarget();
-    const engine::gl::Program& program =
-        host_->programs().get(kDepthProgram, storeGradient ? flags_->storeGradient : 0);
+    const engine::gl::Program& program = host_->programs().get(
+        kDepthProgram, storeGradient ? host_->variantFlag("GS_SHADOW_STORE_GRADIENT") : 0);
     program.use();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);
     glCullFace(settings_.casterFaces == CasterFaces::Front ? GL_BACK : GL_FRONT);
-    if (settings_.technique == ShadowTechnique::SlopeScaledBias) {
+    if (techniqueTraits(settings_).offsetsCasters) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
     }
@@ -404,10 +266,10 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
     if (!samplers_) {
         samplers_ = std::make_unique<Samplers>();
     }
-    const GLuint mapSampler = !usesCompareSampler() ? samplers_->depthLinear.id()
-                              : settings_.technique == ShadowTechnique::HardwarePcf
-                                  ? samplers_->compareLinear.id()
-                                  : samplers_->compareNearest.id();
+    const MapSampler sampler = techniqueTraits(settings_).sampler;
+    const GLuint mapSampler = sampler == MapSampler::DepthLinear     ? samplers_->depthLinear.id()
+                              : sampler == MapSampler::CompareLinear ? samplers_->compareLinear.id()
+                                                                     : samplers_->compareNearest.id();
     for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
         glBindTextureUnit(mapUnits_[slot], maps_[slot]->depth.id());
         glBindSampler(mapUnits_[slot], mapSampler);

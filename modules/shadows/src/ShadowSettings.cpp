@@ -1,4 +1,5 @@
 #include <shadows/ShadowSettings.h>
+#include <shadows/ShadowTechniqueTraits.h>
 
 #include <algorithm>
 #include <array>
@@ -30,20 +31,6 @@ std::optional<Enum> valueOf(const std::array<std::pair<Enum, std::string_view>, 
     return std::nullopt;
 }
 
-constexpr std::array<std::pair<ShadowTechnique, std::string_view>, 11> kTechniqueNames{{
-    {ShadowTechnique::HardCompare, "hard"},
-    {ShadowTechnique::SlopeScaledBias, "slope-scaled"},
-    {ShadowTechnique::HardwarePcf, "hw-pcf"},
-    {ShadowTechnique::Pcf, "pcf"},
-    {ShadowTechnique::Gsm, "gsm"},
-    {ShadowTechnique::PcfGsmNaive, "pcf-gsm-naive"},
-    {ShadowTechnique::PcfGsmPointGradient, "pcf-gsm-point"},
-    {ShadowTechnique::PcfGsmAverageGradient, "pcf-gsm-average"},
-    {ShadowTechnique::PcfGsmQuadratic, "pcf-gsm-quadratic"},
-    {ShadowTechnique::ReceiverPlaneBias, "receiver-plane"},
-    {ShadowTechnique::NormalOffset, "normal-offset"},
-}};
-
 constexpr std::array<std::pair<DepthFormat, std::string_view>, 3> kFormatNames{
     {{DepthFormat::D16, "d16"}, {DepthFormat::D24, "d24"}, {DepthFormat::D32F, "d32f"}}};
 
@@ -63,16 +50,21 @@ constexpr std::array<std::pair<ShadowDebugView, std::string_view>, 6> kDebugName
 } // namespace
 
 std::string_view toString(ShadowTechnique technique) {
-    return nameOf(kTechniqueNames, technique);
+    return techniqueTable()[static_cast<std::size_t>(technique)].name;
 }
 std::optional<ShadowTechnique> techniqueFromString(std::string_view name) {
-    return valueOf(kTechniqueNames, name);
+    for (const ShadowTechniqueTraits& traits : techniqueTable()) {
+        if (traits.name == name) {
+            return traits.technique;
+        }
+    }
+    return std::nullopt;
 }
 const std::vector<ShadowTechnique>& allTechniques() {
     static const std::vector<ShadowTechnique> all = [] {
         std::vector<ShadowTechnique> list;
-        for (const auto& entry : kTechniqueNames) {
-            list.push_back(entry.first);
+        for (const ShadowTechniqueTraits& traits : techniqueTable()) {
+            list.push_back(traits.technique);
         }
         return list;
     }();

@@ -55,18 +55,15 @@ public:
 
 private:
     struct ShadowMap;
-    struct Flags;
     struct Samplers;
 
     void releaseResources();
     [[nodiscard]] bool needsGradientTarget() const;
-    [[nodiscard]] bool usesCompareSampler() const;
     [[nodiscard]] engine::ShaderVariantKey lightingKey() const;
 
     ShadowSettings settings_;
     TapPattern pattern_;
     engine::ModuleHost* host_ = nullptr;
-    std::unique_ptr<Flags> flags_;
     std::unique_ptr<Samplers> samplers_;
     std::vector<GLuint> mapUnits_;
     std::vector<GLuint> gradientUnits_;
