@@ -8,7 +8,7 @@ packages=(
     libepoxy-dev libegl1 libegl-mesa0 libgl1-mesa-dri
     libglfw3-dev libglm-dev libstb-dev
     libosd-dev libopenmesh-dev libtinygltf-dev libembree-dev
-    libgtest-dev libbenchmark-dev libimgui-dev xvfb python3
+    libgtest-dev libbenchmark-dev libimgui-dev xvfb python3 python3-matplotlib nlohmann-json3-dev
 )
 
 missing=()

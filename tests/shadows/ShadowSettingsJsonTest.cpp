@@ -1,0 +1,91 @@
+#include <shadows/ShadowSettingsJson.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+using namespace shadows;
+
+TEST(ShadowSettingsJsonTest, RoundTripsEveryField) {
+    ShadowSettings settings;
+    settings.technique = ShadowTechnique::ReceiverPlaneBias;
+    settings.resolution = 512;
+    settings.depthFormat = DepthFormat::D16;
+    settings.casterFaces = CasterFaces::Back;
+    settings.constantBias = 0.125f;
+    settings.slopeScale = 2.5f;
+    settings.slopeUnits = 3.0f;
+    settings.pcfLayout = TapLayout::Poisson;
+    settings.pcfTaps = 32;
+    settings.pcfRadius = 2.75f;
+    settings.pcfRotate = true;
+    settings.gradientSource = GradientSource::ScreenSpace;
+    settings.fuzzyScale = 0.5f;
+    settings.averageGradientForm = AverageGradientForm::Circular8Vec4;
+    settings.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
+    settings.receiverPlaneClamp = false;
+    settings.normalOffsetTexels = 0.75f;
+    settings.floorReceiverDepth = true;
+    settings.texelSnapping = false;
+    settings.debugView = ShadowDebugView::Bias;
+    EXPECT_EQ(settingsFromJson(settingsToJson(settings), "test"), settings);
+    EXPECT_EQ(settingsFromJson(settingsToJson(ShadowSettings{}), "test"), ShadowSettings{});
+}
+
+TEST(ShadowSettingsJsonTest, MissingFieldsKeepDefaults) {
+    const ShadowSettings settings = settingsFromJson(R"({"technique": "gsm"})", "test");
+    EXPECT_EQ(settings.technique, ShadowTechnique::Gsm);
+    EXPECT_EQ(settings.resolution, ShadowSettings{}.resolution);
+}
+
+struct BadJsonCase {
+    const char* name;
+    const char* text;
+    const char* expected;
+};
+
+class ShadowSettingsJsonErrorTest : public testing::TestWithParam<BadJsonCase> {};
+
+TEST_P(ShadowSettingsJsonErrorTest, NamesSourceAndField) {
+    try {
+        (void)settingsFromJson(GetParam().text, "my.json");
+        FAIL() << "accepted " << GetParam().text;
+    } catch (const SettingsError& error) {
+        const std::string message = error.what();
+        EXPECT_EQ(message.rfind("my.json: ", 0), 0u) << message;
+        EXPECT_NE(message.find(GetParam().expected), std::string::npos) << message;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, ShadowSettingsJsonErrorTest,
+    testing::Values(
+        BadJsonCase{"malformed", R"({"technique": )", "not valid JSON"},
+        BadJsonCase{"notAnObject", "[1, 2]", "expected a JSON object"},
+        BadJsonCase{"unknownField", R"({"techniqe": "gsm"})", "unknown field 'techniqe'"},
+        BadJsonCase{"unknownTechnique", R"({"technique": "shadow-volumes"})", "field 'technique'"},
+        BadJsonCase{"wrongType", R"({"resolution": "big"})", "field 'resolution'"},
+        BadJsonCase{"fractionalInteger", R"({"pcfTaps": 4.5})", "field 'pcfTaps'"},
+        BadJsonCase{"hugeNumber", R"({"pcfRadius": 1e300})", "field 'pcfRadius'"},
+        BadJsonCase{"outOfRange", R"({"resolution": 32})", "resolution 32 is outside [64, 16384]"},
+        BadJsonCase{"badBool", R"({"pcfRotate": 1})", "field 'pcfRotate'"},
+        BadJsonCase{"negativeBias", R"({"constantBias": -1})", "constantBias"}),
+    [](const auto& test) { return std::string(test.param.name); });
+
+TEST(ShadowSettingsJsonTest, FilesRoundTripAndMissingFilesAreNamed) {
+    const auto path =
+        std::filesystem::temp_directory_path() / ("gs_settings_" + std::to_string(::getpid()) + ".json");
+    ShadowSettings settings;
+    settings.technique = ShadowTechnique::PcfGsmQuadratic;
+    saveSettings(settings, path);
+    EXPECT_EQ(loadSettings(path), settings);
+    std::filesystem::remove(path);
+    try {
+        (void)loadSettings(path);
+        FAIL();
+    } catch (const SettingsError& error) {
+        EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos);
+    }
+}
