@@ -106,17 +106,38 @@ void Engine::drawMeshes(const Scene& scene,
     renderer_.drawMeshes(scene, beforeDraw);
 }
 
+void Engine::setPassTiming(std::optional<TimingMethod> method) {
+    if (method) {
+        timer_.emplace(*method);
+    } else {
+        timer_.reset();
+    }
+}
+
+std::optional<TimingMethod> Engine::passTiming() const {
+    return timer_ ? std::optional<TimingMethod>(timer_->method()) : std::nullopt;
+}
+
 FrameStats Engine::renderFrame(const Scene& scene, EntityId camera, const FrameTarget& target) {
     const FrameContext frame = renderer_.beginFrame(scene, camera, target, frameIndex_++);
     const std::vector<Module*> list = modules();
     for (Module* module : list) {
         module->prepareFrame(frame);
     }
+    if (timer_) {
+        timer_->begin();
+    }
     for (Module* module : list) {
         module->renderPrePasses(frame);
     }
+    const double prePass = timer_ ? timer_->end() : -1.0;
     GlDebug::check("pre-passes");
-    const FrameStats stats = renderer_.lightingPass(frame, list);
+    if (timer_) {
+        timer_->begin();
+    }
+    FrameStats stats = renderer_.lightingPass(frame, list);
+    stats.lightingMilliseconds = timer_ ? timer_->end() : -1.0;
+    stats.prePassMilliseconds = prePass;
     for (Module* module : list) {
         module->debugDraw(frame);
     }

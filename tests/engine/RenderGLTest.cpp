@@ -127,3 +127,22 @@ TEST(RenderGLTest, ChildEntitiesFollowTheirParent) {
     engine.renderFrame(fixture.scene, fixture.camera, target);
     expectPixel(target.readPixels(), kSize / 2, glm::vec3(0.0f));
 }
+
+TEST(RenderGLTest, PassTimingReportsBothPassesOnlyWhenEnabled) {
+    auto& context = glTestContext();
+    LitCubeScene fixture(kBase);
+    fixture.addDirectionalLight(0.0f, 1.0f);
+    Engine engine;
+    RenderTarget target(kSize);
+    FrameStats stats = engine.renderFrame(fixture.scene, fixture.camera, target);
+    EXPECT_LT(stats.prePassMilliseconds, 0.0);
+    EXPECT_LT(stats.lightingMilliseconds, 0.0);
+    const TimingMethod method = PassTimer::methodFor(context);
+    EXPECT_EQ(method,
+              context.isSoftwareRenderer() ? TimingMethod::FinishAndSteadyClock : TimingMethod::TimerQuery);
+    engine.setPassTiming(method);
+    stats = engine.renderFrame(fixture.scene, fixture.camera, target);
+    EXPECT_GE(stats.prePassMilliseconds, 0.0);
+    EXPECT_GT(stats.lightingMilliseconds, 0.0);
+    EXPECT_EQ(engine.passTiming(), method);
+}

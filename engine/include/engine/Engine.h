@@ -3,11 +3,13 @@
 #include <engine/ForwardRenderer.h>
 #include <engine/Module.h>
 #include <engine/ModuleLoader.h>
+#include <engine/PassTimer.h>
 #include <engine/ProgramCache.h>
 #include <engine/RenderTarget.h>
 #include <engine/ShaderLibrary.h>
 
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +40,11 @@ public:
     FrameStats renderFrame(const Scene& scene, EntityId camera, const FrameTarget& target);
     FrameStats renderFrame(const Scene& scene, EntityId camera, const RenderTarget& target);
 
+    /// @brief Times the pre-passes and the lighting pass of every frame with `method` (FrameStats fields), or
+    /// stops timing with nullopt. Timing waits for the GPU between passes: leave it off when not measuring.
+    void setPassTiming(std::optional<TimingMethod> method);
+    [[nodiscard]] std::optional<TimingMethod> passTiming() const;
+
     [[nodiscard]] ShaderLibrary& shaders() override { return shaders_; }
     [[nodiscard]] ProgramCache& programs() override { return programs_; }
     [[nodiscard]] ShaderVariantLayout& variants() { return variants_; }
@@ -61,6 +68,7 @@ private:
     ForwardRenderer renderer_;
     ModuleLoader loader_;
     std::vector<std::unique_ptr<Attached>> attached_;
+    std::optional<PassTimer> timer_;
     GLuint nextTextureUnit_ = 0;
     std::uint64_t frameIndex_ = 0;
 };

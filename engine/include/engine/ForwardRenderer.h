@@ -17,6 +17,10 @@ namespace engine {
 struct FrameStats {
     std::size_t drawCalls = 0;
     std::size_t triangles = 0;
+    /// Milliseconds of the modules' pre-passes (e.g. shadow maps) and of the lighting pass; negative unless
+    /// Engine::setPassTiming enabled timing (the method is Engine::passTiming()).
+    double prePassMilliseconds = -1.0;
+    double lightingMilliseconds = -1.0;
 };
 
 /// @brief What the lighting pass writes: the shaded colour, or surface data for measurements (use a float
