@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# A tiny shadowbench sweep end to end: one CSV row per configuration, JSON and images written, bad input refused.
+set -u
+bench=$1
+out=$2
+rm -rf "$out"
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+"$bench" --scene knob --techniques hard,pcf-gsm-average --taps 2,3 --resolutions 256,512 --size 96x72 --frames 1 \
+    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true,constantBias=0" \
+    --out "$out" > "$out.log" 2>&1 || fail "sweep exited $?: $(cat "$out.log")"
+# hard: 2 resolutions; pcf-gsm-average: 2 taps x 2 resolutions; plus one --config = 7 rows.
+rows=$(($(wc -l < "$out/results.csv") - 1))
+[[ $rows -eq 7 ]] || fail "results.csv has $rows rows, expected 7"
+head -1 "$out/results.csv" | grep -q '^scene,label,technique' || fail "results.csv header"
+grep -q '"timingMethod"' "$out/results.json" || fail "results.json lacks the timing method"
+grep -q '^\[7/7\]' "$out.log" || fail "no progress lines"
+[[ -s $out/knob/side-by-side.png && -s $out/knob/rpb-d16-floor-classes.png && -s $out/knob/rpb-d16-floor-error.png ]] ||
+    fail "images missing"
+
+"$bench" --techniques nonsense --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 2 ]] && grep -q "unknown technique 'nonsense'" "$out.bad" || fail "unknown technique not refused"
+"$bench" --config "x:pcfTaps=99" --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 2 ]] && grep -q "pcfTaps" "$out.bad" || fail "bad --config not refused"
+"$bench" --scene /nonexistent.gltf --techniques hard --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 1 ]] && grep -q "/nonexistent.gltf: file not found" "$out.bad" || fail "missing scene not refused"
+
+[[ $failures -eq 0 ]] && echo "ok shadowbench end to end"
+exit $((failures > 0))

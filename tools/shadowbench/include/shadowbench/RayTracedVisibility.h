@@ -1,0 +1,51 @@
+#pragma once
+
+#include <engine/FrameContext.h>
+#include <engine/Scene.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+
+namespace shadowbench {
+
+/// @brief Exact light visibility by ray casting the scene's triangles with Embree 3: the ground truth shadow
+/// maps are measured against.
+class RayTracedVisibility {
+public:
+    /// @brief Builds a BVH over every mesh of `scene` in world space. Throws engine::Error if Embree fails.
+    explicit RayTracedVisibility(const engine::Scene& scene);
+    ~RayTracedVisibility();
+    RayTracedVisibility(const RayTracedVisibility&) = delete;
+    RayTracedVisibility& operator=(const RayTracedVisibility&) = delete;
+
+    /// @brief Hard visibility of a point light source or sun: 1 where the segment from the surface to the
+    /// light is free, 0 where it is blocked. Pixels with `covered[i] == 0` get 0. The ray starts a small
+    /// offset (1e-4 of the scene size) along `normals[i]`, so a surface never shadows itself by rounding.
+    void hardVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                        std::span<const std::uint8_t> covered, const engine::FrameLight& light,
+                        std::span<float> visibility) const;
+
+    /// @brief Soft visibility of an area light: the fraction of `samplesPerAxis`² stratified rays that reach
+    /// a disk of `radius` facing the surface (directional lights: `radius` is the sun's angular radius in
+    /// radians; spot lights: its physical radius in world units).
+    void softVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                        std::span<const std::uint8_t> covered, const engine::FrameLight& light, float radius,
+                        int samplesPerAxis, std::span<float> visibility) const;
+
+    /// @brief Diagonal of the scene's bounding box (world units).
+    [[nodiscard]] float sceneSize() const { return sceneSize_; }
+
+private:
+    /// Casts one ray per entry of `directions`/`lengths` from `origins`, writing 1 for free and 0 for
+    /// blocked.
+    void castShadowRays(std::span<const glm::vec3> origins, std::span<const glm::vec3> directions,
+                        std::span<const float> lengths, std::span<float> free) const;
+
+    void* device_ = nullptr;
+    void* scene_ = nullptr;
+    float sceneSize_ = 1.0f;
+};
+
+} // namespace shadowbench

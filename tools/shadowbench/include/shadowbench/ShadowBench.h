@@ -1,0 +1,117 @@
+#pragma once
+
+#include <shadowbench/RayTracedVisibility.h>
+#include <shadowbench/ShadowMetrics.h>
+
+#include <content/GltfLoader.h>
+#include <engine/GlContext.h>
+#include <engine/Image.h>
+#include <engine/PassTimer.h>
+#include <shadows/ShadowSettings.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowbench {
+
+/// @brief One configuration of a sweep: a label and the shadow settings it runs.
+struct BenchConfig {
+    std::string label;
+    shadows::ShadowSettings settings;
+};
+
+/// @brief Median and spread of one pass over the timed frames, milliseconds.
+struct PassTiming {
+    double median = 0.0;
+    double min = 0.0;
+    double max = 0.0;
+};
+
+/// @brief Everything measured for one scene and configuration.
+struct BenchResult {
+    std::string scene;
+    BenchConfig config;
+    ShadowMetrics metrics;
+    PassTiming shadowPass;
+    PassTiming lightingPass;
+    std::size_t shadowBytes = 0;
+    int bandPixels = 0;
+    std::filesystem::path shadedImage;
+    /// The shaded frame (also written to shadedImage), for side-by-side sheets.
+    engine::Image shaded;
+};
+
+/// @brief Options of a benchmark run.
+struct BenchOptions {
+    /// Image size in pixels. Default 640x480.
+    glm::ivec2 size{640, 480};
+    /// Timed frames after one warm-up frame. Default 5.
+    int frames = 5;
+    /// Half-width of the boundary band around true shadow edges, in shadow-map texels. Default 2.
+    float bandTexels = 2.0f;
+    /// Soft ground truth: stratified samples per axis (0 = hard ground truth). Default 0.
+    int softSamplesPerAxis = 0;
+    /// Soft ground truth: light radius (sun: angular radius in radians; spot: world units). Default 0.01.
+    float softRadius = 0.01f;
+    /// Folder for the images (classification, error heat map, shaded). Default "bench".
+    std::filesystem::path imageFolder = "bench";
+};
+
+/// @brief A scene prepared for measurement: its G-buffer and ray-traced ground truth, computed once.
+class BenchScene {
+public:
+    BenchScene(std::string name, content::LoadedScene loaded, const BenchOptions& options);
+    ~BenchScene();
+
+    [[nodiscard]] const std::string& name() const { return name_; }
+
+private:
+    friend class ShadowBench;
+    std::string name_;
+    content::LoadedScene loaded_;
+    engine::EntityId camera_ = engine::kNoEntity;
+    engine::FrameLight light_;
+    std::vector<glm::vec3> positions_;
+    std::vector<glm::vec3> normals_;
+    std::vector<std::uint8_t> receivers_;
+    std::vector<std::uint8_t> concave_;
+    std::vector<float> truth_;
+    float pixelWorldSize_ = 0.0f;
+};
+
+/// @brief Runs configurations on prepared scenes: accuracy against ground truth and per-pass timing.
+class ShadowBench {
+public:
+    ShadowBench(const engine::GlContext& context, BenchOptions options);
+
+    /// @brief Loads `path` (a glTF), renders its G-buffer and ray-traces the ground truth for its first
+    /// shadow-casting light. Throws engine::Error subclasses naming the file on bad input.
+    [[nodiscard]] std::unique_ptr<BenchScene> prepare(const std::string& name,
+                                                      const std::filesystem::path& path) const;
+
+    /// @brief Measures one configuration on one scene and writes its images.
+    BenchResult run(const BenchScene& scene, const BenchConfig& config) const;
+
+    [[nodiscard]] engine::TimingMethod timingMethod() const { return method_; }
+    [[nodiscard]] const BenchOptions& options() const { return options_; }
+
+private:
+    BenchOptions options_;
+    engine::TimingMethod method_;
+};
+
+/// @brief Settings from a `key=value,key=value` list of ShadowSettings JSON fields (values: true/false,
+/// numbers, or names), starting from defaults. Throws shadows::SettingsError naming the field.
+shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, const std::string& source);
+
+/// @brief Results as CSV, one row per configuration and scene, with a header line.
+std::string resultsCsv(const std::vector<BenchResult>& results);
+/// @brief Results as JSON, with the renderer and the timing method.
+std::string resultsJson(const std::vector<BenchResult>& results, const std::string& renderer,
+                        const std::string& glVersion, engine::TimingMethod method,
+                        const BenchOptions& options);
+
+} // namespace shadowbench

@@ -1,0 +1,191 @@
+#include <shadowbench/RayTracedVisibility.h>
+
+#include <engine/Error.h>
+
+#include <embree3/rtcore.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace shadowbench {
+
+namespace {
+
+RTCDevice device(void* handle) {
+    return static_cast<RTCDevice>(handle);
+}
+RTCScene scene(void* handle) {
+    return static_cast<RTCScene>(handle);
+}
+
+/// Direction and length from `position` towards the light (a sun is infinitely far).
+void towardsLight(const engine::FrameLight& light, const glm::vec3& position, glm::vec3& direction,
+                  float& length) {
+    if (light.light.type == engine::LightType::Directional) {
+        direction = -light.direction;
+        length = std::numeric_limits<float>::infinity();
+        return;
+    }
+    const glm::vec3 offset = light.position - position;
+    length = glm::length(offset);
+    direction = length > 0.0f ? offset / length : -light.direction;
+}
+
+/// Any two unit vectors completing `axis` to an orthonormal basis.
+void basisAround(const glm::vec3& axis, glm::vec3& u, glm::vec3& v) {
+    u = glm::normalize(glm::cross(axis, std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+    v = glm::cross(axis, u);
+}
+
+} // namespace
+
+RayTracedVisibility::RayTracedVisibility(const engine::Scene& source) {
+    RTCDevice dev = rtcNewDevice(nullptr);
+    if (!dev) {
+        throw engine::Error("ground truth: Embree could not create a device (error " +
+                            std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
+    }
+    device_ = dev;
+    RTCScene sc = rtcNewScene(dev);
+    scene_ = sc;
+    rtcSetSceneBuildQuality(sc, RTC_BUILD_QUALITY_HIGH);
+    glm::vec3 low(std::numeric_limits<float>::max());
+    glm::vec3 high(-std::numeric_limits<float>::max());
+    source.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+        if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->indices.size() < 3) {
+            return;
+        }
+        const engine::MeshData& mesh = *entity.mesh->mesh;
+        const glm::mat4 world = source.worldMatrix(id);
+        RTCGeometry geometry = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                     RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                                     mesh.positions.size()));
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            const glm::vec3 p = glm::vec3(world * glm::vec4(mesh.positions[i], 1.0f));
+            low = glm::min(low, p);
+            high = glm::max(high, p);
+            vertices[3 * i] = p.x;
+            vertices[3 * i + 1] = p.y;
+            vertices[3 * i + 2] = p.z;
+        }
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                       RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+                                                                       mesh.indices.size() / 3));
+        std::copy(mesh.indices.begin(),
+                  mesh.indices.begin() + static_cast<std::ptrdiff_t>(mesh.indices.size() / 3 * 3), indices);
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(sc, geometry);
+        rtcReleaseGeometry(geometry);
+    });
+    rtcCommitScene(sc);
+    if (rtcGetDeviceError(dev) != RTC_ERROR_NONE) {
+        throw engine::Error("ground truth: Embree failed to build the scene");
+    }
+    sceneSize_ = low.x <= high.x ? std::max(glm::length(high - low), 1e-6f) : 1.0f;
+}
+
+RayTracedVisibility::~RayTracedVisibility() {
+    rtcReleaseScene(scene(scene_));
+    rtcReleaseDevice(device(device_));
+}
+
+void RayTracedVisibility::castShadowRays(std::span<const glm::vec3> origins,
+                                         std::span<const glm::vec3> directions,
+                                         std::span<const float> lengths, std::span<float> free) const {
+    std::vector<RTCRay> rays(origins.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        RTCRay& ray = rays[i];
+        ray.org_x = origins[i].x;
+        ray.org_y = origins[i].y;
+        ray.org_z = origins[i].z;
+        ray.tnear = 0.0f;
+        ray.dir_x = directions[i].x;
+        ray.dir_y = directions[i].y;
+        ray.dir_z = directions[i].z;
+        ray.time = 0.0f;
+        ray.tfar = lengths[i];
+        ray.mask = ~0u;
+        ray.id = static_cast<unsigned>(i);
+        ray.flags = 0;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    rtcOccluded1M(scene(scene_), &context, rays.data(), static_cast<unsigned>(rays.size()), sizeof(RTCRay));
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        // Embree marks an occluded ray by setting tfar to -inf.
+        free[i] = rays[i].tfar >= 0.0f ? 1.0f : 0.0f;
+    }
+}
+
+void RayTracedVisibility::hardVisibility(std::span<const glm::vec3> positions,
+                                         std::span<const glm::vec3> normals,
+                                         std::span<const std::uint8_t> covered,
+                                         const engine::FrameLight& light, std::span<float> visibility) const {
+    softVisibility(positions, normals, covered, light, 0.0f, 1, visibility);
+}
+
+void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
+                                         std::span<const glm::vec3> normals,
+                                         std::span<const std::uint8_t> covered,
+                                         const engine::FrameLight& light, float radius, int samplesPerAxis,
+                                         std::span<float> visibility) const {
+    const float offset = 1e-4f * sceneSize_;
+    const int samples = std::max(samplesPerAxis, 1);
+    std::vector<glm::vec3> origins;
+    std::vector<glm::vec3> directions;
+    std::vector<float> lengths;
+    std::vector<std::size_t> pixelOf;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        visibility[i] = 0.0f;
+        if (!covered[i]) {
+            continue;
+        }
+        glm::vec3 direction;
+        float length = 0.0f;
+        towardsLight(light, positions[i], direction, length);
+        glm::vec3 u;
+        glm::vec3 v;
+        basisAround(direction, u, v);
+        for (int sy = 0; sy < samples; ++sy) {
+            for (int sx = 0; sx < samples; ++sx) {
+                glm::vec3 target = direction;
+                float segment = length;
+                if (radius > 0.0f && samples > 1) {
+                    // Stratified point on the unit disk (concentric strata: cell centres mapped by sqrt for
+                    // area).
+                    const float s = (static_cast<float>(sx) + 0.5f) / static_cast<float>(samples);
+                    const float t = (static_cast<float>(sy) + 0.5f) / static_cast<float>(samples);
+                    const float r = std::sqrt(s);
+                    const float angle = glm::two_pi<float>() * t;
+                    const glm::vec2 disk(r * std::cos(angle), r * std::sin(angle));
+                    if (std::isinf(length)) {
+                        target = glm::normalize(direction + radius * (disk.x * u + disk.y * v));
+                    } else {
+                        const glm::vec3 point =
+                            positions[i] + direction * length + radius * (disk.x * u + disk.y * v);
+                        segment = glm::length(point - positions[i]);
+                        target = (point - positions[i]) / segment;
+                    }
+                }
+                origins.push_back(positions[i] + offset * normals[i]);
+                directions.push_back(target);
+                lengths.push_back(std::isinf(segment) ? std::numeric_limits<float>::infinity()
+                                                      : segment * 0.9999f);
+                pixelOf.push_back(i);
+            }
+        }
+    }
+    std::vector<float> free(origins.size());
+    castShadowRays(origins, directions, lengths, free);
+    const float weight = 1.0f / static_cast<float>(samples * samples);
+    for (std::size_t ray = 0; ray < free.size(); ++ray) {
+        visibility[pixelOf[ray]] += free[ray] * weight;
+    }
+}
+
+} // namespace shadowbench

@@ -1,0 +1,184 @@
+#include <shadowbench/ShadowMetrics.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowbench {
+
+namespace {
+std::size_t indexOf(glm::ivec2 size, int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
+}
+} // namespace
+
+std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
+                                 std::span<const std::uint8_t> receiver, int bandRadius) {
+    const std::size_t count = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
+    // Distance to the nearest receiver of each truth, as a square-window test done separably: first the
+    // nearest lit/shadowed receiver along each row, then down the columns.
+    std::vector<std::uint8_t> nearLit(count, 0);
+    std::vector<std::uint8_t> nearShadowed(count, 0);
+    std::vector<std::uint8_t> rowLit(count, 0);
+    std::vector<std::uint8_t> rowShadowed(count, 0);
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            for (int dx = -bandRadius; dx <= bandRadius; ++dx) {
+                const int nx = x + dx;
+                if (nx < 0 || nx >= size.x) {
+                    continue;
+                }
+                const std::size_t j = indexOf(size, nx, y);
+                if (receiver[j]) {
+                    (truth[j] >= 0.5f ? rowLit : rowShadowed)[indexOf(size, x, y)] = 1;
+                }
+            }
+        }
+    }
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            for (int dy = -bandRadius; dy <= bandRadius; ++dy) {
+                const int ny = y + dy;
+                if (ny < 0 || ny >= size.y) {
+                    continue;
+                }
+                const std::size_t j = indexOf(size, x, ny);
+                nearLit[indexOf(size, x, y)] |= rowLit[j];
+                nearShadowed[indexOf(size, x, y)] |= rowShadowed[j];
+            }
+        }
+    }
+    std::vector<PixelClass> classes(count, PixelClass::Ignored);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!receiver[i]) {
+            continue;
+        }
+        if (nearLit[i] && nearShadowed[i]) {
+            classes[i] = PixelClass::Band;
+        } else {
+            classes[i] = truth[i] >= 0.5f ? PixelClass::Lit : PixelClass::Shadowed;
+        }
+    }
+    return classes;
+}
+
+ShadowMetrics computeMetrics(std::span<const PixelClass> classes, std::span<const float> truth,
+                             std::span<const float> visibility, std::span<const std::uint8_t> concave) {
+    ShadowMetrics m;
+    double darkeningSum = 0.0;
+    double concaveSum = 0.0;
+    double absoluteSum = 0.0;
+    double squareSum = 0.0;
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+        if (classes[i] == PixelClass::Ignored) {
+            continue;
+        }
+        ++m.receivers;
+        const double error = static_cast<double>(visibility[i]) - static_cast<double>(truth[i]);
+        absoluteSum += std::abs(error);
+        squareSum += error * error;
+        switch (classes[i]) {
+        case PixelClass::Band:
+            ++m.band;
+            break;
+        case PixelClass::Lit:
+            ++m.lit;
+            m.acne += visibility[i] < 0.5f;
+            darkeningSum += 1.0 - static_cast<double>(visibility[i]);
+            if (!concave.empty() && concave[i]) {
+                ++m.concave;
+                concaveSum += 1.0 - static_cast<double>(visibility[i]);
+            }
+            break;
+        case PixelClass::Shadowed:
+            ++m.shadowed;
+            m.leak += visibility[i] > 0.5f;
+            break;
+        case PixelClass::Ignored:
+            break;
+        }
+    }
+    auto ratio = [](double a, std::size_t b) { return b ? a / static_cast<double>(b) : 0.0; };
+    m.acneRate = ratio(static_cast<double>(m.acne), m.lit);
+    m.leakRate = ratio(static_cast<double>(m.leak), m.shadowed);
+    m.darkening = ratio(darkeningSum, m.lit);
+    m.concaveDarkening = ratio(concaveSum, m.concave);
+    m.meanAbsoluteError = ratio(absoluteSum, m.receivers);
+    m.rootMeanSquareError = std::sqrt(ratio(squareSum, m.receivers));
+    return m;
+}
+
+std::vector<std::uint8_t> concaveMask(glm::ivec2 size, std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals,
+                                      std::span<const std::uint8_t> covered, float threshold) {
+    std::vector<std::uint8_t> mask(positions.size(), 0);
+    for (int y = 1; y + 1 < size.y; ++y) {
+        for (int x = 1; x + 1 < size.x; ++x) {
+            const std::size_t i = indexOf(size, x, y);
+            if (!covered[i]) {
+                continue;
+            }
+            for (const glm::ivec2 axis : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
+                const std::size_t a = indexOf(size, x - axis.x, y - axis.y);
+                const std::size_t b = indexOf(size, x + axis.x, y + axis.y);
+                if (!covered[a] || !covered[b]) {
+                    continue;
+                }
+                const glm::vec3 dp = positions[b] - positions[a];
+                const float length2 = glm::dot(dp, dp);
+                // Second fundamental form along dp: negative where the surface curves towards its normal
+                // side.
+                if (length2 > 0.0f && glm::dot(normals[b] - normals[a], dp) < -threshold * length2) {
+                    mask[i] = 1;
+                }
+            }
+        }
+    }
+    return mask;
+}
+
+engine::Image classificationImage(glm::ivec2 size, std::span<const PixelClass> classes,
+                                  std::span<const float> visibility) {
+    engine::Image image;
+    image.size = size;
+    image.pixels.reserve(classes.size() * 4);
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+        glm::u8vec3 color(0);
+        switch (classes[i]) {
+        case PixelClass::Ignored:
+            color = {0, 0, 0};
+            break;
+        case PixelClass::Band:
+            color = {150, 140, 90};
+            break;
+        case PixelClass::Lit:
+            color = visibility[i] < 0.5f ? glm::u8vec3(230, 40, 40) : glm::u8vec3(235, 235, 235);
+            break;
+        case PixelClass::Shadowed:
+            color = visibility[i] > 0.5f ? glm::u8vec3(40, 80, 240) : glm::u8vec3(70, 70, 70);
+            break;
+        }
+        image.pixels.insert(image.pixels.end(), {color.r, color.g, color.b, 255});
+    }
+    return image;
+}
+
+engine::Image errorHeatMap(glm::ivec2 size, std::span<const PixelClass> classes, std::span<const float> truth,
+                           std::span<const float> visibility) {
+    engine::Image image;
+    image.size = size;
+    image.pixels.reserve(classes.size() * 4);
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+        const float e = classes[i] == PixelClass::Ignored
+                            ? 0.0f
+                            : std::clamp(std::abs(visibility[i] - truth[i]), 0.0f, 1.0f);
+        // Black → red → yellow → white as the error goes 0 → 1.
+        const auto channel = [](float v) {
+            return static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(v, 0.0f, 1.0f)));
+        };
+        image.pixels.insert(image.pixels.end(),
+                            {channel(3.0f * e), channel(3.0f * e - 1.0f), channel(3.0f * e - 2.0f), 255});
+    }
+    return image;
+}
+
+} // namespace shadowbench

@@ -1,0 +1,287 @@
+// gs-shadowbench: sweeps shadow techniques x taps x resolutions x depth formats x scenes, measures each
+// against ray-traced ground truth (Embree) and times its passes, and writes CSV, JSON and images.
+#include <shadowbench/ShadowBench.h>
+
+#include <engine/Error.h>
+#include <engine/HeadlessContext.h>
+#include <engine/Image.h>
+#include <shadows/ShadowSettingsJson.h>
+#include <shadows/ShadowTechniqueTraits.h>
+
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
+  --scene NAME|FILE     content scene name or glTF path (repeatable)         [knob]
+  --techniques LIST     comma-separated technique names, or "all"          [all]
+  --taps LIST           PCF taps per side (grid) to sweep, e.g. 2,4,6       [4]
+  --radius TEXELS       PCF radius in texels                                [1.5]
+  --resolutions LIST    shadow map sizes, e.g. 512,1024                     [1024]
+  --formats LIST        depth formats: d16,d24,d32f                         [d24]
+  --config LABEL:SPEC   an extra configuration, SPEC = key=value,... of the settings JSON fields
+                        (e.g. "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true")
+  --size WxH            image size                                          [640x480]
+  --frames N            timed frames per configuration                      [5]
+  --band TEXELS         boundary band half-width around true shadow edges   [2]
+  --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
+  --out DIR             where results.csv, results.json and images go       [bench]
+  --content DIR         content folder                                      [the repository's content/])";
+
+[[noreturn]] void usageError(const std::string& message) {
+    std::cerr << "gs-shadowbench: " << message << "\n" << kUsage << "\n";
+    std::exit(2);
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::istringstream list(text);
+    for (std::string item; std::getline(list, item, ',');) {
+        if (!item.empty()) {
+            items.push_back(item);
+        }
+    }
+    return items;
+}
+
+int parseInt(const std::string& option, const std::string& text, int low, int high) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+        value = std::stoi(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || value < low || value > high) {
+        usageError(option + ": '" + text + "' is not an integer in [" + std::to_string(low) + ", " +
+                   std::to_string(high) + "]");
+    }
+    return value;
+}
+
+float parseFloat(const std::string& option, const std::string& text, float low, float high) {
+    std::size_t used = 0;
+    float value = 0.0f;
+    try {
+        value = std::stof(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || !(value >= low && value <= high)) {
+        usageError(option + ": '" + text + "' is not a number in [" + std::to_string(low) + ", " +
+                   std::to_string(high) + "]");
+    }
+    return value;
+}
+
+struct Options {
+    std::vector<std::string> scenes;
+    std::vector<shadows::ShadowTechnique> techniques = shadows::allTechniques();
+    std::vector<int> taps{4};
+    float radius = 1.5f;
+    std::vector<int> resolutions{1024};
+    std::vector<shadows::DepthFormat> formats{shadows::DepthFormat::D24};
+    std::vector<shadowbench::BenchConfig> extra;
+    std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    shadowbench::BenchOptions bench;
+};
+
+Options parse(int argc, char** argv) {
+    Options options;
+    options.bench.imageFolder = "bench";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) {
+                usageError(arg + " needs a value");
+            }
+            return argv[++i];
+        };
+        if (arg == "--help") {
+            std::cout << kUsage << "\n";
+            std::exit(0);
+        } else if (arg == "--scene") {
+            options.scenes.push_back(value());
+        } else if (arg == "--techniques") {
+            const std::string list = value();
+            if (list != "all") {
+                options.techniques.clear();
+                for (const std::string& name : splitList(list)) {
+                    const auto technique = shadows::techniqueFromString(name);
+                    if (!technique) {
+                        usageError("--techniques: unknown technique '" + name + "'");
+                    }
+                    options.techniques.push_back(*technique);
+                }
+            }
+        } else if (arg == "--taps") {
+            options.taps.clear();
+            for (const std::string& item : splitList(value())) {
+                options.taps.push_back(parseInt("--taps", item, 2, 8));
+            }
+        } else if (arg == "--radius") {
+            options.radius = parseFloat("--radius", value(), 0.25f, 16.0f);
+        } else if (arg == "--resolutions") {
+            options.resolutions.clear();
+            for (const std::string& item : splitList(value())) {
+                options.resolutions.push_back(parseInt("--resolutions", item, 64, 16384));
+            }
+        } else if (arg == "--formats") {
+            options.formats.clear();
+            for (const std::string& item : splitList(value())) {
+                const auto format = shadows::depthFormatFromString(item);
+                if (!format) {
+                    usageError("--formats: unknown depth format '" + item + "' (d16, d24, d32f)");
+                }
+                options.formats.push_back(*format);
+            }
+        } else if (arg == "--config") {
+            const std::string spec = value();
+            const auto colon = spec.find(':');
+            if (colon == std::string::npos || colon == 0) {
+                usageError("--config: '" + spec + "' is not LABEL:key=value,...");
+            }
+            try {
+                options.extra.push_back(
+                    {spec.substr(0, colon),
+                     shadowbench::settingsFromAssignments(spec.substr(colon + 1), "--config " + spec)});
+            } catch (const engine::Error& error) {
+                usageError(error.what());
+            }
+        } else if (arg == "--size") {
+            const std::string text = value();
+            const auto x = text.find('x');
+            if (x == std::string::npos) {
+                usageError("--size: '" + text + "' is not WIDTHxHEIGHT");
+            }
+            options.bench.size = {parseInt("--size", text.substr(0, x), 16, 4096),
+                                  parseInt("--size", text.substr(x + 1), 16, 4096)};
+        } else if (arg == "--frames") {
+            options.bench.frames = parseInt("--frames", value(), 1, 1000);
+        } else if (arg == "--band") {
+            options.bench.bandTexels = parseFloat("--band", value(), 0.0f, 64.0f);
+        } else if (arg == "--soft") {
+            const std::string text = value();
+            const auto colon = text.find(':');
+            if (colon == std::string::npos) {
+                usageError("--soft: '" + text + "' is not SAMPLES:RADIUS");
+            }
+            options.bench.softSamplesPerAxis = parseInt("--soft", text.substr(0, colon), 1, 32);
+            options.bench.softRadius = parseFloat("--soft", text.substr(colon + 1), 0.0f, 100.0f);
+        } else if (arg == "--out") {
+            options.bench.imageFolder = value();
+        } else if (arg == "--content") {
+            options.contentFolder = value();
+        } else {
+            usageError("unknown option '" + arg + "'");
+        }
+    }
+    if (options.scenes.empty()) {
+        options.scenes.push_back("knob");
+    }
+    return options;
+}
+
+/// The sweep: every technique at every resolution and format; pattern techniques once per tap count.
+std::vector<shadowbench::BenchConfig> configurations(const Options& options) {
+    std::vector<shadowbench::BenchConfig> configs;
+    for (const shadows::ShadowTechnique technique : options.techniques) {
+        const bool patterned = shadows::techniqueTable()[static_cast<std::size_t>(technique)].usesTapPattern;
+        const std::vector<int> taps = patterned ? options.taps : std::vector<int>{options.taps.front()};
+        for (const int resolution : options.resolutions) {
+            for (const shadows::DepthFormat format : options.formats) {
+                for (const int tapCount : taps) {
+                    shadowbench::BenchConfig config;
+                    config.settings.technique = technique;
+                    config.settings.resolution = resolution;
+                    config.settings.depthFormat = format;
+                    config.settings.pcfTaps = tapCount;
+                    config.settings.pcfRadius = options.radius;
+                    config.label =
+                        std::string(shadows::toString(technique)) +
+                        (patterned ? "-" + std::to_string(tapCount) + "x" + std::to_string(tapCount) : "") +
+                        "-" + std::to_string(resolution) + "-" + std::string(shadows::toString(format));
+                    configs.push_back(config);
+                }
+            }
+        }
+    }
+    configs.insert(configs.end(), options.extra.begin(), options.extra.end());
+    return configs;
+}
+
+/// Shaded images of a scene side by side, four to a row, in sweep order.
+engine::Image sideBySide(const std::vector<engine::Image>& images) {
+    const glm::ivec2 cell = images.front().size;
+    const int columns = std::min<int>(4, static_cast<int>(images.size()));
+    const int rows = (static_cast<int>(images.size()) + columns - 1) / columns;
+    engine::Image sheet;
+    sheet.size = {cell.x * columns, cell.y * rows};
+    sheet.pixels.assign(static_cast<std::size_t>(sheet.size.x) * static_cast<std::size_t>(sheet.size.y) * 4,
+                        0);
+    for (std::size_t n = 0; n < images.size(); ++n) {
+        const int ox = static_cast<int>(n) % columns * cell.x;
+        const int oy = static_cast<int>(n) / columns * cell.y;
+        for (int y = 0; y < cell.y; ++y) {
+            const auto* from =
+                images[n].pixels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(cell.x) * 4;
+            auto* to = sheet.pixels.data() +
+                       (static_cast<std::size_t>(oy + y) * static_cast<std::size_t>(sheet.size.x) +
+                        static_cast<std::size_t>(ox)) *
+                           4;
+            std::copy(from, from + static_cast<std::size_t>(cell.x) * 4, to);
+        }
+    }
+    return sheet;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const Options options = parse(argc, argv);
+    try {
+        engine::HeadlessContext context;
+        const shadowbench::ShadowBench bench(context, options.bench);
+        const std::vector<shadowbench::BenchConfig> configs = configurations(options);
+        const std::size_t total = configs.size() * options.scenes.size();
+        std::vector<shadowbench::BenchResult> results;
+        std::cout << "gs-shadowbench: " << total << " runs on " << context.renderer() << ", timing by "
+                  << engine::PassTimer::describe(bench.timingMethod()) << "\n";
+        for (const std::string& sceneName : options.scenes) {
+            const std::filesystem::path given = sceneName;
+            const bool isPath =
+                given.has_parent_path() || given.extension() == ".gltf" || given.extension() == ".glb";
+            const std::filesystem::path path =
+                isPath ? given : options.contentFolder / "scenes" / (sceneName + ".gltf");
+            const auto scene = bench.prepare(path.stem().string(), path);
+            std::vector<engine::Image> shaded;
+            for (const shadowbench::BenchConfig& config : configs) {
+                shadowbench::BenchResult result = bench.run(*scene, config);
+                shaded.push_back(std::move(result.shaded));
+                results.push_back(std::move(result));
+                const shadowbench::ShadowMetrics& m = results.back().metrics;
+                std::cout << "[" << results.size() << "/" << total << "] " << scene->name() << " "
+                          << config.label << ": acne " << std::setprecision(3) << m.acneRate << ", leak "
+                          << m.leakRate << ", MAE " << m.meanAbsoluteError << ", shadow "
+                          << results.back().shadowPass.median << " ms, lighting "
+                          << results.back().lightingPass.median << " ms\n"
+                          << std::flush;
+            }
+            engine::writePng(options.bench.imageFolder / scene->name() / "side-by-side.png",
+                             sideBySide(shaded));
+        }
+        engine::writeTextFile(options.bench.imageFolder / "results.csv", shadowbench::resultsCsv(results));
+        engine::writeTextFile(options.bench.imageFolder / "results.json",
+                              shadowbench::resultsJson(results, context.renderer(), context.version(),
+                                                       bench.timingMethod(), options.bench));
+        std::cout << "wrote " << (options.bench.imageFolder / "results.csv").string()
+                  << " and results.json\n";
+        return 0;
+    } catch (const engine::Error& error) {
+        std::cerr << "gs-shadowbench: " << error.what() << "\n";
+        return 1;
+    }
+}
