@@ -49,18 +49,21 @@ float gsTapReceiverDepth(float receiverDepth, vec2 offset, vec2 gradient) {
 
 // Average gradient by least squares over the taps' own depths (GSM multisampling reference, "Optimizing Texture
 // Look-ups"): g = (sum o o^T)^-1 sum (d - mean d) o. `inverseCovariance` is precomputed per tap pattern (zero
-// when the pattern is degenerate, which yields a zero gradient).
+// when the pattern is degenerate, which yields a zero gradient). One pass: the sums run on depths shifted by the
+// first tap's (exact for the mean-free form, and no cancellation between depths near 1).
 vec2 gsLeastSquaresGradient(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS], int count,
                             mat2 inverseCovariance) {
-    float mean = 0.0f;
-    for (int i = 0; i < count; ++i) {
-        mean += depths[i];
-    }
-    mean /= float(max(count, 1));
+    float shift = depths[0];
+    float sum = 0.0f;
     vec2 weighted = vec2(0.0f);
+    vec2 offsetSum = vec2(0.0f);
     for (int i = 0; i < count; ++i) {
-        weighted += (depths[i] - mean) * offsets[i];
+        float d = depths[i] - shift;
+        sum += d;
+        weighted += d * offsets[i];
+        offsetSum += offsets[i];
     }
+    weighted -= (sum / float(max(count, 1))) * offsetSum;
     return inverseCovariance * weighted;
 }
 

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
+# Usage: bash tools/results.sh [work folder, default out/results]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+work=${1:-out/results}
+bash tools/setup.sh
+cmake --preset default >/dev/null
+cmake --build --preset default --target gs-shadowbench
+bench=./build/bin/gs-shadowbench
+rm -rf "$work"
+
+# 1. Trade-off sweep on the default scene: every technique, tap counts and map sizes.
+"$bench" --scene knob --taps 2,4,6 --resolutions 512,1024,2048 --frames 7 --out "$work/knob-sweep"
+
+# 2. Every stress scene at one map size (spheres: a spot light), plus the reproductions of the references' claims.
+"$bench" --scene torus --scene bowl --scene thin-shell --scene crease-cube --scene grazing-plane --scene spheres \
+    --taps 4 --resolutions 1024 --frames 5 --out "$work/scenes"
+"$bench" --scene knob --techniques pcf,pcf-gsm-naive,pcf-gsm-point,pcf-gsm-average,pcf-gsm-quadratic \
+    --taps 5 --radius 2 --resolutions 1024 --frames 15 \
+    --config "rpb-d16-round:technique=receiver-plane,depthFormat=d16,constantBias=0" \
+    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,constantBias=0,floorReceiverDepth=true" \
+    --config "rpb-d24-round:technique=receiver-plane,depthFormat=d24,constantBias=0" \
+    --config "rpb-d24-floor:technique=receiver-plane,depthFormat=d24,constantBias=0,floorReceiverDepth=true" \
+    --config "average-circular8:technique=pcf-gsm-average,averageGradientForm=circular8,pcfRadius=1" \
+    --config "average-circular8-vec4:technique=pcf-gsm-average,averageGradientForm=circular8-vec4,pcfRadius=1" \
+    --config "naive-circular8:technique=pcf-gsm-naive,pcfLayout=circular8,pcfRadius=1" \
+    --out "$work/reproduction"
+
+python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
+echo "wrote docs/RESULTS.md"
