@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <set>
 
 using namespace shadows;
 namespace g = shadows::glsl;
@@ -269,7 +270,8 @@ TEST(TapPatternTest, PoissonPatternIsDeterministicAndInsideTheRadius) {
 
 TEST(ShadowTechniqueTableTest, OneRowPerTechniqueInEnumOrder) {
     const auto table = techniqueTable();
-    ASSERT_EQ(table.size(), allTechniques().size());
+    ASSERT_EQ(table.size(), kTechniqueCount);
+    ASSERT_EQ(allTechniques().size(), kTechniqueCount);
     for (std::size_t i = 0; i < table.size(); ++i) {
         EXPECT_EQ(static_cast<std::size_t>(table[i].technique), i);
         EXPECT_FALSE(table[i].defines.empty()) << table[i].name;
@@ -294,4 +296,104 @@ TEST(ShadowTechniqueTableTest, DefinesFollowOptionsOnlyWhereTheyApply) {
     settings.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
     EXPECT_EQ(techniqueTraits(settings).sampler, MapSampler::CompareNearest);
     EXPECT_TRUE(techniqueTraits(settings).usesTapPattern);
+}
+
+TEST(FilteredShadowMathTest, ChebyshevMatchesTheClosedFormBound) {
+    // Mean 0.4, variance 0.01: at depth 0.6 the bound is 0.01 / (0.01 + 0.04) = 0.2.
+    const glm::vec2 moments(0.4f, 0.01f + 0.16f);
+    EXPECT_NEAR(g::gsChebyshevVisibility(moments, 0.6f, 0.0f, 0.0f), 0.2f, 1e-5f);
+    EXPECT_EQ(g::gsChebyshevVisibility(moments, 0.4f, 0.0f, 0.0f), 1.0f); // mean beyond the receiver: lit
+    EXPECT_EQ(g::gsChebyshevVisibility(moments, 0.1f, 0.0f, 0.0f), 1.0f);
+    // Bleeding reduction 0.1 maps 0.2 to (0.2 - 0.1) / 0.9.
+    EXPECT_NEAR(g::gsChebyshevVisibility(moments, 0.6f, 0.0f, 0.1f), 0.1f / 0.9f, 1e-5f);
+    // Zero variance with a minimum: finite and in range.
+    const float v = g::gsChebyshevVisibility(glm::vec2(0.5f, 0.25f), 0.5001f, 1e-6f, 0.0f);
+    EXPECT_TRUE(std::isfinite(v) && v >= 0.0f && v <= 1.0f);
+    EXPECT_LT(g::gsChebyshevVisibility(glm::vec2(0.5f, 0.25f), 0.6f, 0.0f, 0.0f), 1e-20f);
+}
+
+TEST(FilteredShadowMathTest, MsmRecoversATwoDepthMixture) {
+    // 30 % of the filter region at depth 0.3, 70 % at 0.7.
+    const glm::vec4 moments = 0.3f * g::gsMsmMoments(0.3f) + 0.7f * g::gsMsmMoments(0.7f);
+    const float bias = 1e-6f;
+    EXPECT_NEAR(g::gsMsmVisibility(moments, 0.2f, bias), 1.0f, 1e-3f); // in front of both occluders
+    EXPECT_NEAR(g::gsMsmVisibility(moments, 0.5f, bias), 0.7f, 0.02f); // behind the nearer 30 %
+    EXPECT_NEAR(g::gsMsmVisibility(moments, 0.9f, bias), 0.0f, 0.02f); // behind both
+}
+
+TEST(FilteredShadowMathTest, MsmIsFiniteForConstantDepthTexels) {
+    // A constant-depth texel has singular moments (rank-1 Hankel matrix).
+    for (const float z : {0.0f, 1e-4f, 0.25f, 0.5f, 0.999f, 1.0f}) {
+        for (const float bias : {0.0f, 3e-5f, 9e-3f}) {
+            for (const float receiver : {0.0f, z - 1e-3f, z, z + 1e-3f, 1.0f}) {
+                const float v = g::gsMsmVisibility(g::gsMsmMoments(z), receiver, bias);
+                EXPECT_TRUE(std::isfinite(v)) << z << " " << bias << " " << receiver;
+                EXPECT_GE(v, 0.0f);
+                EXPECT_LE(v, 1.0f);
+            }
+        }
+    }
+}
+
+TEST(FilteredShadowMathTest, QuantisedMomentsRoundTripWithinTheSixteenBitBound) {
+    const glm::mat4 inverse = glm::inverse(g::GS_MSM_QUANTIZE);
+    // The bound: half a 16-bit step through the inverse transform (its largest absolute row sum).
+    float rowSum = 0.0f;
+    for (int r = 0; r < 4; ++r) {
+        float sum = 0.0f;
+        for (int c = 0; c < 4; ++c) {
+            sum += std::abs(inverse[c][r]);
+        }
+        rowSum = std::max(rowSum, sum);
+    }
+    const float bound = rowSum * 0.5f / 65535.0f + 1e-6f;
+    for (int i = 0; i <= 100; ++i) {
+        const float z = static_cast<float>(i) / 100.0f;
+        const glm::vec4 quantised = g::gsMsmQuantize(g::gsMsmMoments(z));
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_GE(quantised[c], -1e-4f);
+            EXPECT_LE(quantised[c], 1.0f + 1e-4f);
+        }
+        const glm::vec4 stored = glm::round(glm::clamp(quantised, 0.0f, 1.0f) * 65535.0f) / 65535.0f;
+        const glm::vec4 back = g::gsMsmDequantize(stored, inverse);
+        const glm::vec4 exact = g::gsMsmMoments(z);
+        for (int c = 0; c < 4; ++c) {
+            EXPECT_NEAR(back[c], exact[c], bound) << "z " << z << " moment " << c;
+        }
+    }
+}
+
+TEST(JitterTexelsTest, EveryTapStaysInItsStratumAndTestTapsSpread) {
+    const JitterTexels jitter = makeJitterTexels(32, 8);
+    ASSERT_EQ(jitter.pairs, 16);
+    ASSERT_EQ(jitter.texels.size(), 8u * 8u * 16u);
+    glm::ivec2 grid;
+    for (int tap = 0; tap < 32; ++tap) {
+        const glm::ivec2 stratum = jitterStratum(tap, 32, grid);
+        for (std::size_t pixel = 0; pixel < 64; ++pixel) {
+            const glm::u16vec4 texel = jitter.texels[static_cast<std::size_t>(tap / 2) * 64 + pixel];
+            const glm::vec2 point =
+                glm::vec2(tap % 2 == 0 ? texel.x : texel.z, tap % 2 == 0 ? texel.y : texel.w) / 65535.0f;
+            EXPECT_GE(point.x * static_cast<float>(grid.x), static_cast<float>(stratum.x) - 1e-3f);
+            EXPECT_LE(point.x * static_cast<float>(grid.x), static_cast<float>(stratum.x + 1) + 1e-3f);
+            EXPECT_GE(point.y * static_cast<float>(grid.y), static_cast<float>(stratum.y) - 1e-3f);
+            EXPECT_LE(point.y * static_cast<float>(grid.y), static_cast<float>(stratum.y + 1) + 1e-3f);
+        }
+    }
+    EXPECT_EQ(grid.x * grid.y, 32);
+    // The first 8 (test) taps use 8 distinct strata reaching both halves of the box in x and y.
+    std::set<std::pair<int, int>> cells;
+    glm::ivec2 low(100);
+    glm::ivec2 high(-1);
+    for (int tap = 0; tap < 8; ++tap) {
+        const glm::ivec2 s = jitterStratum(tap, 32, grid);
+        cells.insert({s.x, s.y});
+        low = glm::min(low, s);
+        high = glm::max(high, s);
+    }
+    EXPECT_EQ(cells.size(), 8u);
+    EXPECT_LT(low.x, grid.x / 2);
+    EXPECT_GE(high.x, grid.x / 2);
+    EXPECT_LT(low.y, grid.y / 2);
+    EXPECT_GE(high.y, grid.y / 2);
 }

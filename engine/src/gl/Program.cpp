@@ -119,6 +119,9 @@ void Program::set(std::string_view name, int value) const {
 void Program::set(std::string_view name, float value) const {
     glProgramUniform1f(id(), uniformLocation(name), value);
 }
+void Program::set(std::string_view name, const glm::ivec2& v) const {
+    glProgramUniform2iv(id(), uniformLocation(name), 1, glm::value_ptr(v));
+}
 void Program::set(std::string_view name, const glm::vec2& v) const {
     glProgramUniform2fv(id(), uniformLocation(name), 1, glm::value_ptr(v));
 }

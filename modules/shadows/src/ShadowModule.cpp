@@ -1,5 +1,6 @@
 #include <shadows/ShadowModule.h>
 #include <shadows/ShadowTechniqueTraits.h>
+#include <shadows/VisibilityMath.h>
 
 #include <engine/ForwardRenderer.h>
 #include <engine/ProgramCache.h>
@@ -19,6 +20,7 @@ namespace {
 
 constexpr int kMaxMaps = 4; // GS_SHADOW_MAX_MAPS in receiver.glsl
 const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
+const engine::ProgramDesc kBlurProgram{"shadows/fullscreen.vert", "shadows/blur.frag"};
 
 GLenum glDepthFormat(DepthFormat format) {
     switch (format) {
@@ -34,6 +36,30 @@ GLenum glDepthFormat(DepthFormat format) {
 
 std::size_t bytesPerDepthTexel(DepthFormat format) {
     return format == DepthFormat::D16 ? 2 : 4;
+}
+
+/// Colour format of the moments target, or 0 when the technique stores none.
+GLenum momentsFormat(const ShadowSettings& settings) {
+    switch (techniqueTraits(settings).moments) {
+    case 2:
+        return GL_RG32F;
+    case 4:
+        return settings.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F;
+    default:
+        return 0;
+    }
+}
+
+std::size_t bytesPerMomentTexel(GLenum format) {
+    return format == GL_RG32F || format == GL_RGBA16 ? 8 : format == GL_RGBA32F ? 16 : 0;
+}
+
+GLsizei mipLevels(int resolution) {
+    GLsizei levels = 1;
+    while ((resolution >> levels) > 0) {
+        ++levels;
+    }
+    return levels;
 }
 
 engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filter, bool compare) {
@@ -56,12 +82,22 @@ engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filte
 } // namespace
 
 struct ShadowModule::ShadowMap {
-    ShadowMap(int resolution, DepthFormat format, bool withGradient)
+    ShadowMap(int resolution, DepthFormat format, bool withGradient, GLenum momentFormat)
         : depth(glDepthFormat(format), glm::ivec2(resolution)), framebuffer("shadow map") {
         framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
         if (withGradient) {
             gradient.emplace(GL_RG32F, glm::ivec2(resolution));
             framebuffer.attach(GL_COLOR_ATTACHMENT0, *gradient);
+            framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        } else if (momentFormat != 0) {
+            // Moments are filtered: blurred at level 0, then mipmapped for trilinear lookups.
+            moments.emplace(momentFormat, glm::ivec2(resolution), mipLevels(resolution));
+            blurTemporary.emplace(momentFormat, glm::ivec2(resolution));
+            blurFramebuffer.emplace("shadow moments blur");
+            blurFramebuffer->attach(GL_COLOR_ATTACHMENT0, *blurTemporary);
+            blurFramebuffer->setDrawBuffers({GL_COLOR_ATTACHMENT0});
+            blurFramebuffer->check();
+            framebuffer.attach(GL_COLOR_ATTACHMENT0, *moments);
             framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});
         } else {
             framebuffer.setDrawBuffers({});
@@ -73,6 +109,9 @@ struct ShadowModule::ShadowMap {
     LightProjection projection;
     engine::gl::Texture depth;
     std::optional<engine::gl::Texture> gradient;
+    std::optional<engine::gl::Texture> moments;
+    std::optional<engine::gl::Texture> blurTemporary;
+    std::optional<engine::gl::Framebuffer> blurFramebuffer;
     engine::gl::Framebuffer framebuffer;
 };
 
@@ -80,6 +119,31 @@ struct ShadowModule::Samplers {
     engine::gl::GlObject<engine::gl::detail::deleteSampler> compareNearest = makeSampler(GL_NEAREST, true);
     engine::gl::GlObject<engine::gl::detail::deleteSampler> compareLinear = makeSampler(GL_LINEAR, true);
     engine::gl::GlObject<engine::gl::detail::deleteSampler> depthLinear = makeSampler(GL_LINEAR, false);
+    engine::gl::GlObject<engine::gl::detail::deleteSampler> moments = [] {
+        auto sampler = makeSampler(GL_LINEAR, false);
+        // Trilinear over the mip chain; edges clamp (a quantised border would not be "far").
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        return sampler;
+    }();
+};
+
+/// The jitter texture of JitteredPcf (soft shadows reference), made when the technique is first used.
+struct ShadowModule::Jitter {
+    explicit Jitter(int tapCount) : taps(tapCount) {
+        const JitterTexels texels = makeJitterTexels(tapCount);
+        GLuint name = 0;
+        glCreateTextures(GL_TEXTURE_3D, 1, &name);
+        texture = engine::gl::GlObject<engine::gl::detail::deleteTexture>(name);
+        glTextureStorage3D(name, 1, GL_RGBA16, texels.size, texels.size, texels.pairs);
+        glTextureSubImage3D(name, 0, 0, 0, 0, texels.size, texels.size, texels.pairs, GL_RGBA,
+                            GL_UNSIGNED_SHORT, texels.texels.data());
+        glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    int taps;
+    engine::gl::GlObject<engine::gl::detail::deleteTexture> texture;
 };
 
 ShadowModule::ShadowModule() : ShadowModule(ShadowSettings{}) {}
@@ -112,8 +176,11 @@ ShadowStats ShadowModule::stats() const {
     stats.shadowMaps = static_cast<int>(maps_.size());
     const auto texels =
         static_cast<std::size_t>(settings_.resolution) * static_cast<std::size_t>(settings_.resolution);
+    const std::size_t momentBytes = bytesPerMomentTexel(momentsFormat(settings_));
     for (const auto& map : maps_) {
         stats.bytes += texels * (bytesPerDepthTexel(settings_.depthFormat) + (map->gradient ? 8 : 0));
+        // Moments: the mip chain (4/3 of level 0) plus the blur's temporary level.
+        stats.bytes += map->moments ? texels * momentBytes * 4 / 3 + texels * momentBytes : 0;
     }
     return stats;
 }
@@ -134,12 +201,15 @@ void ShadowModule::attach(engine::ModuleHost& host) {
         mapUnits_.push_back(host.reserveTextureUnit());
         gradientUnits_.push_back(host.reserveTextureUnit());
     }
+    jitterUnit_ = host.reserveTextureUnit();
     dirty_ = true;
 }
 
 void ShadowModule::detach() {
     releaseResources();
     samplers_.reset();
+    jitter_.reset();
+    fullscreenVertexArray_.reset();
     host_ = nullptr;
 }
 
@@ -207,7 +277,7 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         }
         if (used == maps_.size()) {
             maps_.push_back(std::make_unique<ShadowMap>(settings_.resolution, settings_.depthFormat,
-                                                        needsGradientTarget()));
+                                                        needsGradientTarget(), momentsFormat(settings_)));
         }
         maps_[used]->lightIndex = light.index;
         maps_[used]->projection = projection;
@@ -223,8 +293,17 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         return;
     }
     const bool storeGradient = needsGradientTarget();
-    const engine::gl::Program& program = host_->programs().get(
-        kDepthProgram, storeGradient ? host_->variantFlag("GS_SHADOW_STORE_GRADIENT") : 0);
+    const int moments = techniqueTraits(settings_).moments;
+    engine::ShaderVariantKey depthKey = 0;
+    if (storeGradient) {
+        depthKey = host_->variantFlag("GS_SHADOW_STORE_GRADIENT");
+    } else if (moments > 0) {
+        depthKey = host_->variantFlag(moments == 2 ? "GS_SHADOW_STORE_MOMENTS2" : "GS_SHADOW_STORE_MOMENTS4");
+        if (moments == 4 && settings_.msmQuantize16) {
+            depthKey |= host_->variantFlag("GS_SHADOW_MSM_QUANTIZED");
+        }
+    }
+    const engine::gl::Program& program = host_->programs().get(kDepthProgram, depthKey);
     program.use();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -243,6 +322,12 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         if (storeGradient) {
             const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
             glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, zero);
+        } else if (map->moments) {
+            // Empty texels hold the moments of the far plane (depth 1), in the stored basis.
+            const glm::vec4 far = settings_.msmQuantize16 && moments == 4
+                                      ? glsl::gsMsmQuantize(glm::vec4(1.0f))
+                                      : glm::vec4(1.0f);
+            glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, glm::value_ptr(far));
         }
         glClear(GL_DEPTH_BUFFER_BIT);
         program.set("uLightViewProjection", map->projection.projection * map->projection.view);
@@ -253,6 +338,37 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
+    if (moments > 0) {
+        filterMoments();
+    }
+}
+
+void ShadowModule::filterMoments() {
+    const engine::gl::Program& blur = host_->programs().get(kBlurProgram, 0);
+    blur.use();
+    blur.set("uSource", static_cast<int>(mapUnits_[0]));
+    blur.set("uRadius", settings_.momentBlurRadius);
+    glDisable(GL_DEPTH_TEST);
+    if (!fullscreenVertexArray_) {
+        fullscreenVertexArray_ = std::make_unique<engine::gl::VertexArray>();
+    }
+    fullscreenVertexArray_->bind();
+    glBindSampler(mapUnits_[0], 0);
+    for (const auto& map : maps_) {
+        if (settings_.momentBlurRadius > 0) {
+            // Horizontal into the temporary level, then vertical back into the moments' level 0.
+            map->blurFramebuffer->bind();
+            map->moments->bind(mapUnits_[0]);
+            blur.set("uDirection", glm::ivec2(1, 0));
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            map->framebuffer.bind();
+            map->blurTemporary->bind(mapUnits_[0]);
+            blur.set("uDirection", glm::ivec2(0, 1));
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+        glGenerateTextureMipmap(map->moments->id());
+    }
+    glEnable(GL_DEPTH_TEST);
 }
 
 engine::ShaderVariantKey ShadowModule::variantBits(const engine::DrawContext&) const {
@@ -269,9 +385,18 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
     const MapSampler sampler = techniqueTraits(settings_).sampler;
     const GLuint mapSampler = sampler == MapSampler::DepthLinear     ? samplers_->depthLinear.id()
                               : sampler == MapSampler::CompareLinear ? samplers_->compareLinear.id()
+                              : sampler == MapSampler::Moments       ? samplers_->moments.id()
                                                                      : samplers_->compareNearest.id();
+    if (settings_.technique == ShadowTechnique::JitteredPcf) {
+        if (!jitter_ || jitter_->taps != settings_.jitterTaps) {
+            jitter_ = std::make_unique<Jitter>(settings_.jitterTaps);
+        }
+        glBindTextureUnit(jitterUnit_, jitter_->texture.id());
+        glBindSampler(jitterUnit_, 0);
+    }
     for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
-        glBindTextureUnit(mapUnits_[slot], maps_[slot]->depth.id());
+        glBindTextureUnit(mapUnits_[slot],
+                          maps_[slot]->moments ? maps_[slot]->moments->id() : maps_[slot]->depth.id());
         glBindSampler(mapUnits_[slot], mapSampler);
         if (maps_[slot]->gradient) {
             glBindTextureUnit(gradientUnits_[slot], maps_[slot]->gradient->id());
@@ -310,6 +435,14 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
     program.set("gsShadowFuzzyScale", settings_.fuzzyScale);
     program.set("gsShadowNormalOffset", settings_.normalOffsetTexels);
     program.set("gsShadowReceiverPlaneClamp", settings_.receiverPlaneClamp ? 1 : 0);
+    program.set("gsShadowMinimumVariance", settings_.vsmMinimumVariance);
+    program.set("gsShadowBleedingReduction", settings_.lightBleedingReduction);
+    program.set("gsShadowMomentBias", settings_.msmMomentBias);
+    program.set("gsShadowMsmDequantize", glm::inverse(glsl::GS_MSM_QUANTIZE));
+    program.set("gsShadowJitter", static_cast<int>(jitterUnit_));
+    program.set("gsJitterPairs", settings_.jitterTaps / 2);
+    program.set("gsEarlyOutPairs", settings_.earlyOutTestTaps / 2);
+    program.set("gsShadowJitterRadius", settings_.pcfRadius);
     program.set("gsTapCount", static_cast<int>(pattern_.offsets.size()));
     program.set("gsTapInverseCovariance", pattern_.inverseCovariance);
     program.set("gsTapDisplace", settings_.pcfRadius / std::sqrt(2.0f));

@@ -39,13 +39,14 @@ constexpr std::array<std::pair<GradientSource, std::string_view>, 3> kGradientNa
      {GradientSource::CentralDifferences, "central"},
      {GradientSource::ScreenSpace, "screen"}}};
 
-constexpr std::array<std::pair<ShadowDebugView, std::string_view>, 6> kDebugNames{
+constexpr std::array<std::pair<ShadowDebugView, std::string_view>, 7> kDebugNames{
     {{ShadowDebugView::None, "none"},
      {ShadowDebugView::TexelCheckerboard, "texels"},
      {ShadowDebugView::GradientMagnitude, "gradient"},
      {ShadowDebugView::Bias, "bias"},
      {ShadowDebugView::Visibility, "visibility"},
-     {ShadowDebugView::ShadowMap, "shadow-map"}}};
+     {ShadowDebugView::ShadowMap, "shadow-map"},
+     {ShadowDebugView::FullKernel, "kernel"}}};
 
 } // namespace
 
@@ -118,6 +119,20 @@ std::vector<std::string> ShadowSettings::validate() const {
     require(std::isfinite(fuzzyScale) && fuzzyScale > 0.0f,
             "fuzzyScale must be a finite number > 0 (texels)");
     require(finiteAtLeast(normalOffsetTexels, 0.0f), "normalOffsetTexels must be a finite number >= 0");
+    require(momentBlurRadius >= 0 && momentBlurRadius <= 16,
+            "momentBlurRadius " + std::to_string(momentBlurRadius) + " is outside [0, 16]");
+    require(finiteAtLeast(vsmMinimumVariance, 0.0f), "vsmMinimumVariance must be a finite number >= 0");
+    require(std::isfinite(lightBleedingReduction) && lightBleedingReduction >= 0.0f &&
+                lightBleedingReduction <= 0.95f,
+            "lightBleedingReduction must be in [0, 0.95]");
+    require(std::isfinite(msmMomentBias) && msmMomentBias >= 0.0f && msmMomentBias <= 0.5f,
+            "msmMomentBias must be in [0, 0.5]");
+    require(jitterTaps >= 8 && jitterTaps <= 64 && jitterTaps % 2 == 0,
+            "jitterTaps " + std::to_string(jitterTaps) + " must be even and in [8, 64]");
+    require(earlyOutTestTaps == 0 || (earlyOutTestTaps >= 4 && earlyOutTestTaps <= 16 &&
+                                      earlyOutTestTaps % 2 == 0 && earlyOutTestTaps < jitterTaps),
+            "earlyOutTestTaps " + std::to_string(earlyOutTestTaps) +
+                " must be 0, or even in [4, 16] and below jitterTaps");
     if (pcfLayout == TapLayout::Grid) {
         require(pcfTaps >= 2 && pcfTaps <= 8,
                 "pcfTaps " + std::to_string(pcfTaps) + " is outside [2, 8] for a grid");

@@ -65,8 +65,27 @@ const DepthFormat kFormats[] = {DepthFormat::D16, DepthFormat::D24, DepthFormat:
 const GradientSource kSources[] = {GradientSource::StoredDerivatives, GradientSource::CentralDifferences,
                                    GradientSource::ScreenSpace};
 const ShadowDebugView kViews[] = {
-    ShadowDebugView::None, ShadowDebugView::TexelCheckerboard, ShadowDebugView::GradientMagnitude,
-    ShadowDebugView::Bias, ShadowDebugView::Visibility,        ShadowDebugView::ShadowMap};
+    ShadowDebugView::None,      ShadowDebugView::TexelCheckerboard, ShadowDebugView::GradientMagnitude,
+    ShadowDebugView::Bias,      ShadowDebugView::Visibility,        ShadowDebugView::ShadowMap,
+    ShadowDebugView::FullKernel};
+
+/// The offending value for an error message: scalars as written (strings cut short), arrays and objects by
+/// kind only. Dumping a container recurses once per nesting level, so a deeply nested value in a settings
+/// file would overflow the stack while its error was being reported.
+std::string describe(const Json& value) {
+    if (value.is_array()) {
+        return "an array";
+    }
+    if (value.is_object()) {
+        return "an object";
+    }
+    constexpr std::size_t kLongest = 40;
+    std::string text = value.dump();
+    if (text.size() > kLongest) {
+        text = text.substr(0, kLongest) + "...";
+    }
+    return text;
+}
 
 /// One field: how to write it and how to read it (throwing a message without the source prefix).
 struct Field {
@@ -86,7 +105,7 @@ Field enumField(Enum ShadowSettings::*member, EnumNames<Enum> names) {
                         }
                     }
                 }
-                throw std::invalid_argument(value.dump() + " is not one of " + names.list());
+                throw std::invalid_argument(describe(value) + " is not one of " + names.list());
             }};
 }
 
@@ -94,11 +113,11 @@ Field floatField(float ShadowSettings::*member) {
     return {[=](const ShadowSettings& s) { return Json(s.*member); },
             [=](ShadowSettings& s, const Json& value) {
                 if (!value.is_number()) {
-                    throw std::invalid_argument(value.dump() + " is not a number");
+                    throw std::invalid_argument(describe(value) + " is not a number");
                 }
                 const double number = value.get<double>();
                 if (!std::isfinite(number) || std::abs(number) > 3.0e38) {
-                    throw std::invalid_argument(value.dump() + " is out of range");
+                    throw std::invalid_argument(describe(value) + " is out of range");
                 }
                 s.*member = static_cast<float>(number);
             }};
@@ -107,9 +126,16 @@ Field floatField(float ShadowSettings::*member) {
 Field intField(int ShadowSettings::*member) {
     return {[=](const ShadowSettings& s) { return Json(s.*member); },
             [=](ShadowSettings& s, const Json& value) {
-                if (!value.is_number_integer() || value.get<std::int64_t>() < -(1 << 30) ||
-                    value.get<std::int64_t>() > (1 << 30)) {
-                    throw std::invalid_argument(value.dump() + " is not an integer");
+                if (!value.is_number_integer()) {
+                    throw std::invalid_argument(describe(value) + " is not an integer");
+                }
+                // Unsigned numbers above INT64_MAX would wrap to negative int64 values, so compare them
+                // unsigned (18446744073709551615 once read as -1).
+                const bool inRange = value.is_number_unsigned() ? value.get<std::uint64_t>() <= (1u << 30)
+                                                                : value.get<std::int64_t>() >= -(1 << 30) &&
+                                                                      value.get<std::int64_t>() <= (1 << 30);
+                if (!inRange) {
+                    throw std::invalid_argument(describe(value) + " is out of range");
                 }
                 s.*member = value.get<int>();
             }};
@@ -119,7 +145,7 @@ Field boolField(bool ShadowSettings::*member) {
     return {[=](const ShadowSettings& s) { return Json(s.*member); },
             [=](ShadowSettings& s, const Json& value) {
                 if (!value.is_boolean()) {
-                    throw std::invalid_argument(value.dump() + " is not true or false");
+                    throw std::invalid_argument(describe(value) + " is not true or false");
                 }
                 s.*member = value.get<bool>();
             }};
@@ -146,6 +172,13 @@ const std::map<std::string, Field>& fields() {
         {"normalOffsetTexels", floatField(&ShadowSettings::normalOffsetTexels)},
         {"floorReceiverDepth", boolField(&ShadowSettings::floorReceiverDepth)},
         {"texelSnapping", boolField(&ShadowSettings::texelSnapping)},
+        {"momentBlurRadius", intField(&ShadowSettings::momentBlurRadius)},
+        {"vsmMinimumVariance", floatField(&ShadowSettings::vsmMinimumVariance)},
+        {"lightBleedingReduction", floatField(&ShadowSettings::lightBleedingReduction)},
+        {"msmMomentBias", floatField(&ShadowSettings::msmMomentBias)},
+        {"msmQuantize16", boolField(&ShadowSettings::msmQuantize16)},
+        {"jitterTaps", intField(&ShadowSettings::jitterTaps)},
+        {"earlyOutTestTaps", intField(&ShadowSettings::earlyOutTestTaps)},
         {"debugView", enumField(&ShadowSettings::debugView, namesFrom(kViews))},
     };
     return table;
@@ -165,7 +198,8 @@ ShadowSettings settingsFromJson(std::string_view text, const std::string& source
     Json document;
     try {
         document = Json::parse(text.begin(), text.end());
-    } catch (const Json::parse_error& error) {
+    } catch (const Json::exception& error) {
+        // Not only parse_error: a number too large for a double is an out_of_range error.
         throw SettingsError(source + ": not valid JSON: " + error.what());
     }
     if (!document.is_object()) {

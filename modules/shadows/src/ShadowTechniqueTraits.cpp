@@ -53,6 +53,9 @@ std::span<const ShadowTechniqueTraits> techniqueTable() {
          false,
          false,
          false},
+        {T::Vsm, "vsm", S::Moments, {"GS_SHADOW_VSM"}, false, false, false, 2},
+        {T::Msm, "msm", S::Moments, {"GS_SHADOW_MSM"}, false, false, false, 4},
+        {T::JitteredPcf, "pcf-jittered", S::CompareNearest, {"GS_SHADOW_JITTERED"}, false, false, false},
     };
     return table;
 }
@@ -64,6 +67,12 @@ ShadowTechniqueTraits techniqueTraits(const ShadowSettings& settings) {
         traits.sampler = MapSampler::CompareNearest;
         traits.usesTapPattern = true;
         traits.defines.push_back("GS_SHADOW_RPB_PER_TAP");
+    }
+    if (settings.technique == ShadowTechnique::Msm && settings.msmQuantize16) {
+        traits.defines.push_back("GS_SHADOW_MSM_QUANTIZED");
+    }
+    if (settings.technique == ShadowTechnique::JitteredPcf && settings.earlyOutTestTaps > 0) {
+        traits.defines.push_back("GS_SHADOW_EARLY_OUT");
     }
     if (settings.technique == ShadowTechnique::PcfGsmAverageGradient) {
         if (settings.averageGradientForm == AverageGradientForm::Circular8) {
@@ -79,7 +88,7 @@ std::vector<std::string_view> lightingDefines(const ShadowSettings& settings) {
     const ShadowTechniqueTraits traits = techniqueTraits(settings);
     std::vector<std::string_view> defines = {"GS_SHADOWS"};
     defines.insert(defines.end(), traits.defines.begin(), traits.defines.end());
-    if (traits.sampler != MapSampler::DepthLinear) {
+    if (traits.sampler == MapSampler::CompareNearest || traits.sampler == MapSampler::CompareLinear) {
         defines.push_back("GS_SHADOW_SAMPLER_COMPARE");
     }
     if (traits.readsPointGradient) {
@@ -98,7 +107,8 @@ std::vector<std::string_view> lightingDefines(const ShadowSettings& settings) {
                                                   "GS_SHADOW_DEBUG_GRADIENT",
                                                   "GS_SHADOW_DEBUG_BIAS",
                                                   "GS_SHADOW_DEBUG_VISIBILITY",
-                                                  "GS_SHADOW_DEBUG_MAP"};
+                                                  "GS_SHADOW_DEBUG_MAP",
+                                                  "GS_SHADOW_DEBUG_KERNEL"};
     if (settings.debugView != ShadowDebugView::None) {
         defines.push_back(kDebugDefines[static_cast<std::size_t>(settings.debugView)]);
     }

@@ -2,6 +2,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -206,6 +207,93 @@ std::string toString(TapLayout layout) {
         return "circular8";
     }
     return "?";
+}
+
+} // namespace shadows
+
+namespace shadows {
+
+namespace {
+
+glm::ivec2 strataGrid(int taps) {
+    int columns = static_cast<int>(std::sqrt(static_cast<double>(taps)));
+    while (taps % columns != 0) {
+        --columns;
+    }
+    return {taps / columns, columns};
+}
+
+/// A stride coprime with `taps` near taps·0.618, so consecutive taps land far apart.
+int coprimeStride(int taps) {
+    for (int stride = static_cast<int>(static_cast<double>(taps) * 0.618) | 1; stride < taps; stride += 2) {
+        int a = stride;
+        int b = taps;
+        while (b != 0) {
+            const int t = a % b;
+            a = b;
+            b = t;
+        }
+        if (a == 1) {
+            return stride;
+        }
+    }
+    return 1;
+}
+
+} // namespace
+
+glm::ivec2 jitterStratum(int tap, int taps, glm::ivec2& grid) {
+    grid = strataGrid(taps);
+    const int cell = static_cast<int>((static_cast<long long>(tap) * coprimeStride(taps)) % taps);
+    return {cell % grid.x, cell / grid.x};
+}
+
+JitterTexels makeJitterTexels(int taps, int size) {
+    if (taps < 2 || taps % 2 != 0 || taps > TapPattern::kMaxTaps) {
+        throw std::invalid_argument("jitter taps " + std::to_string(taps) + " must be even and in [2, 64]");
+    }
+    JitterTexels result;
+    result.size = size;
+    result.pairs = taps / 2;
+    result.texels.resize(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) *
+                         static_cast<std::size_t>(result.pairs));
+    std::uint32_t state = 0x2545F491u;
+    auto random = [&state] {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    };
+    auto encode = [](float unit) {
+        return static_cast<std::uint16_t>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 65535.0f));
+    };
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            for (int tap = 0; tap < taps; ++tap) {
+                glm::ivec2 grid;
+                const glm::ivec2 stratum = jitterStratum(tap, taps, grid);
+                // A uniform point inside the stratum, in [0,1]² (stored as unorm; the shader maps it to
+                // [-1,1]²).
+                const glm::vec2 point((static_cast<float>(stratum.x) + random()) / static_cast<float>(grid.x),
+                                      (static_cast<float>(stratum.y) + random()) /
+                                          static_cast<float>(grid.y));
+                const std::size_t index =
+                    (static_cast<std::size_t>(tap / 2) * static_cast<std::size_t>(size) +
+                     static_cast<std::size_t>(y)) *
+                        static_cast<std::size_t>(size) +
+                    static_cast<std::size_t>(x);
+                glm::u16vec4& texel = result.texels[index];
+                if (tap % 2 == 0) {
+                    texel.x = encode(point.x);
+                    texel.y = encode(point.y);
+                } else {
+                    texel.z = encode(point.x);
+                    texel.w = encode(point.y);
+                }
+            }
+        }
+    }
+    return result;
 }
 
 } // namespace shadows

@@ -43,6 +43,7 @@ public:
 
     void set(std::string_view name, int value) const;
     void set(std::string_view name, float value) const;
+    void set(std::string_view name, const glm::ivec2& value) const;
     void set(std::string_view name, const glm::vec2& value) const;
     void set(std::string_view name, const glm::vec3& value) const;
     void set(std::string_view name, const glm::vec4& value) const;

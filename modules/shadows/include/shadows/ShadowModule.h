@@ -8,6 +8,7 @@
 #include <engine/gl/Framebuffer.h>
 #include <engine/gl/GlObject.h>
 #include <engine/gl/Texture.h>
+#include <engine/gl/VertexArray.h>
 
 #include <map>
 #include <memory>
@@ -56,9 +57,11 @@ public:
 private:
     struct ShadowMap;
     struct Samplers;
+    struct Jitter;
 
     void releaseResources();
     [[nodiscard]] bool needsGradientTarget() const;
+    void filterMoments();
     [[nodiscard]] engine::ShaderVariantKey lightingKey() const;
 
     ShadowSettings settings_;
@@ -67,6 +70,9 @@ private:
     std::unique_ptr<Samplers> samplers_;
     std::vector<GLuint> mapUnits_;
     std::vector<GLuint> gradientUnits_;
+    GLuint jitterUnit_ = 0;
+    std::unique_ptr<Jitter> jitter_;
+    std::unique_ptr<engine::gl::VertexArray> fullscreenVertexArray_;
     std::vector<std::unique_ptr<ShadowMap>> maps_;
     std::vector<int> slotOfLight_;
     engine::ShaderVariantKey lightingKey_ = 0;

@@ -22,7 +22,13 @@ enum class ShadowTechnique {
     PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
     ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
     NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
+    Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
+    Msm,         ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
+    JitteredPcf, ///< PCF over a stratified jitter texture, optional early-out on a few test taps
 };
+
+/// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::JitteredPcf) + 1;
 
 /// @brief Where the single-fragment depth gradient comes from (GSM reference, "Overview").
 enum class GradientSource {
@@ -51,7 +57,15 @@ enum class ReceiverPlaneKernel {
 };
 
 /// @brief What the lighting pass shows instead of the shaded colour.
-enum class ShadowDebugView { None, TexelCheckerboard, GradientMagnitude, Bias, Visibility, ShadowMap };
+enum class ShadowDebugView {
+    None,
+    TexelCheckerboard,
+    GradientMagnitude,
+    Bias,
+    Visibility,
+    ShadowMap,
+    FullKernel
+};
 
 /// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it
 /// (changing anything re-initialises the affected resources lazily on the next frame).
@@ -95,6 +109,23 @@ struct ShadowSettings {
     bool floorReceiverDepth = false;
     /// Snap the directional light's frustum to whole texels so shadows do not shimmer. Default true.
     bool texelSnapping = true;
+    /// Vsm, Msm: half-width of the separable box blur of the moments, texels, 0..16. Default 2.
+    int momentBlurRadius = 2;
+    /// Vsm: smallest variance the Chebyshev bound uses (depth units squared), >= 0. Default 1e-6.
+    float vsmMinimumVariance = 1e-6f;
+    /// Vsm: light-bleeding reduction, the bound's tail cut off (linstep), 0..0.95. Default 0.2.
+    float lightBleedingReduction = 0.2f;
+    /// Msm: moment bias towards (0, 0.63, 0, 0.63) (advanced shadow mapping reference), 0..0.5. Default 3e-5;
+    /// the reference's blog uses 9e-3, which hides more numerical trouble at the cost of light leaking.
+    float msmMomentBias = 3e-5f;
+    /// Msm: store the moments in 16-bit unorm through the optimised basis (64 bits per texel) instead of 4 x
+    /// 32-bit float. Default false.
+    bool msmQuantize16 = false;
+    /// JitteredPcf: taps, even, 8..64 (two per jitter texel). Default 32.
+    int jitterTaps = 32;
+    /// JitteredPcf: test taps taken before deciding whether the pixel needs the full kernel, even, 0 (always
+    /// the full kernel) or 4..16. Default 8.
+    int earlyOutTestTaps = 8;
     /// Debug output of the lighting pass. Default None.
     ShadowDebugView debugView = ShadowDebugView::None;
 

@@ -13,6 +13,7 @@ enum class MapSampler {
     CompareNearest, ///< sampler2DShadow, one hardware comparison per lookup
     CompareLinear,  ///< sampler2DShadow with LINEAR filtering: hardware 2x2 PCF
     DepthLinear,    ///< sampler2D returning linearly filtered depth (GSM, gathers)
+    Moments,        ///< trilinear sampler2D over the blurred, mipmapped moments target (VSM, MSM)
 };
 
 /// @brief The strategy table behind ShadowModule: what each technique needs, one row per technique.
@@ -29,6 +30,8 @@ struct ShadowTechniqueTraits {
     bool usesTapPattern;
     /// Renders casters with slope-scaled polygon offset.
     bool offsetsCasters;
+    /// Moments stored per texel by the shadow pass (0: depth only; 2: VSM; 4: MSM).
+    int moments = 0;
 };
 
 /// @brief Every technique's row, in ShadowTechnique order.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include <array>
 #include <string>
@@ -39,5 +40,27 @@ struct TapPattern {
 
 /// @brief "grid", "poisson", "circular8".
 std::string toString(TapLayout layout);
+
+} // namespace shadows
+
+namespace shadows {
+
+/// @brief Offsets of jittered PCF, stored as the soft shadows reference does: a size x size x pairs texture
+/// whose RGBA texels hold two offsets (rg, ba) in [0,1] (offset = 2·value − 1, times the radius).
+struct JitterTexels {
+    int size = 32;
+    int pairs = 0;
+    /// size·size·pairs texels, x fastest, then y, then pair; 16-bit unorm components.
+    std::vector<glm::u16vec4> texels;
+};
+
+/// @brief Stratified jitter for `taps` taps: the [-1,1]² box is split into a cols x rows grid of strata (the
+/// most square factorisation of `taps`), every pixel of the size² tile gets one random point per stratum
+/// (fixed seed), and strata are visited in a coprime-stride order so the first taps — the early-out test taps
+/// — spread over the whole box instead of filling its first rows.
+JitterTexels makeJitterTexels(int taps, int size = 32);
+
+/// @brief The stratum (column, row, of cols x rows) tap `tap` lies in, in the order makeJitterTexels uses.
+glm::ivec2 jitterStratum(int tap, int taps, glm::ivec2& grid);
 
 } // namespace shadows

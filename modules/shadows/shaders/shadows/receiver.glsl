@@ -23,6 +23,17 @@ uniform sampler2D gsShadowMap[GS_SHADOW_MAX_MAPS];
 uniform sampler2D gsShadowGradientMap[GS_SHADOW_MAX_MAPS];
 #endif
 
+uniform float gsShadowMinimumVariance;               // VSM
+uniform float gsShadowBleedingReduction;             // VSM
+uniform float gsShadowMomentBias;                    // MSM
+uniform mat4 gsShadowMsmDequantize;                  // MSM 16-bit: inverse of the optimised basis
+#ifdef GS_SHADOW_JITTERED
+uniform sampler3D gsShadowJitter;                    // two stratified offsets per texel (soft shadows reference)
+uniform int gsJitterPairs;
+uniform int gsEarlyOutPairs;                         // 0: always the full kernel
+uniform float gsShadowJitterRadius;                  // texels
+#endif
+
 uniform int gsTapCount;
 uniform vec2 gsTapOffsets[GS_MAX_TAPS];
 uniform mat2 gsTapInverseCovariance;
@@ -36,6 +47,7 @@ float gsDebugBias = 0.0;
 float gsDebugStored = 1.0;
 vec2 gsDebugTexel = vec2(0.0);
 bool gsDebugSet = false;
+bool gsDebugFullKernel = false;
 
 // Reference (comparison) depth, floored to the format's step when requested (bias reference).
 float gsShadowReference(float depth) {
@@ -151,6 +163,39 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
 #endif
     visibility = gsPcfGsmVisibility(depths, gsTapOffsets, gsTapCount, depth, patternGradient, correction,
                                     gsTapInverseCovariance, gsTapFitRows, gsShadowFuzzyScale, gsShadowDepthStep);
+#elif defined(GS_SHADOW_VSM)
+    vec2 moments = texture(gsShadowMap[slot], coord.xy).rg;
+    visibility = gsChebyshevVisibility(moments, depth, gsShadowMinimumVariance, gsShadowBleedingReduction);
+    stored = moments.x;
+#elif defined(GS_SHADOW_MSM)
+    vec4 moments = texture(gsShadowMap[slot], coord.xy);
+#ifdef GS_SHADOW_MSM_QUANTIZED
+    moments = gsMsmDequantize(moments, gsShadowMsmDequantize);
+#endif
+    visibility = gsMsmVisibility(moments, depth, gsShadowMomentBias);
+    stored = moments.x;
+#elif defined(GS_SHADOW_JITTERED)
+    // Soft shadows reference: pairs of stratified offsets from the jitter texture, tiled over the screen. With
+    // early-out, the first pairs are test taps; when they agree the pixel is not in a penumbra and the rest are
+    // skipped. The result averages every tap actually taken (the reference's pseudo-code divides by the full
+    // count either way, which darkens skipped pixels).
+    ivec2 tile = ivec2(mod(gl_FragCoord.xy, 32.0));
+    float reference = gsShadowReference(depth);
+    float lit = 0.0;
+    int taken = 0;
+    for (int pair = 0; pair < gsJitterPairs; ++pair) {
+#ifdef GS_SHADOW_EARLY_OUT
+        if (pair == gsEarlyOutPairs && gsTestTapsAgree(lit, float(taken))) {
+            break;
+        }
+#endif
+        vec4 offsets = (texelFetch(gsShadowJitter, ivec3(tile, pair), 0) * 2.0 - 1.0) * gsShadowJitterRadius;
+        lit += texture(gsShadowMap[slot], vec3((texel + offsets.xy) * gsShadowTexel[slot].y, reference));
+        lit += texture(gsShadowMap[slot], vec3((texel + offsets.zw) * gsShadowTexel[slot].y, reference));
+        taken += 2;
+    }
+    visibility = lit / float(max(taken, 1));
+    gsDebugFullKernel = taken == 2 * gsJitterPairs;
 #elif defined(GS_SHADOW_RECEIVER_PLANE)
     pointGradient = screenGradient;
 #if defined(GS_SHADOW_RPB_PER_TAP)
@@ -216,5 +261,8 @@ void gsShadowDebug(inout vec3 color) {
     color = vec3(max(scaled, 0.0), max(-scaled, 0.0), 0.0);
 #elif defined(GS_SHADOW_DEBUG_MAP)
     color = vec3(gsDebugStored);
+#elif defined(GS_SHADOW_DEBUG_KERNEL)
+    // Red where the full kernel ran (early-out undecided: a penumbra candidate); visibility in green.
+    color = vec3(gsDebugFullKernel ? 1.0 : 0.0, gsDebugVisibility, 0.0);
 #endif
 }

@@ -164,3 +164,80 @@ float gsBilinear(vec4 visibilities, vec2 weights) {
     return mix(mix(visibilities.w, visibilities.z, weights.x), mix(visibilities.x, visibilities.y, weights.x),
                weights.y);
 }
+
+// ---- Filtered shadow maps (advanced shadow mapping reference: VSM, MSM) ----
+
+// Variance shadow maps (Donnelly & Lauritzen 2006): Chebyshev's one-tailed bound on the fraction of the filter
+// region at or behind the receiver. The early return where the mean lies beyond the receiver is the reference's
+// (without it the bound darkens fully lit surfaces). `bleedingReduction` cuts the bound's tail (linstep), the
+// usual remedy for light bleeding.
+float gsChebyshevVisibility(vec2 moments, float depth, float minimumVariance, float bleedingReduction) {
+    if (depth <= moments.x) {
+        return 1.0f;
+    }
+    float variance = max(moments.y - moments.x * moments.x, max(minimumVariance, 1e-30f));
+    float distance = depth - moments.x;
+    float bound = variance / (variance + distance * distance);
+    return gsSaturate((bound - bleedingReduction) / max(1.0f - bleedingReduction, 1e-6f));
+}
+
+// Moment shadow mapping, four moments, Hamburger bound (Peters & Klein 2015, Algorithm 2, as in the reference):
+// bias the moments towards (0, 0.63, 0, 0.63), solve the 3x3 Hankel system by Cholesky, find the two other
+// support points z2 <= z3 of the bound's distribution, then the three cases. Every pivot and denominator is
+// guarded, so singular moments (a constant-depth texel) and negative discriminants stay finite.
+float gsMsmVisibility(vec4 moments, float depth, float momentBias) {
+    vec4 b = mix(moments, vec4(0.0f, 0.63f, 0.0f, 0.63f), momentBias);
+    // Cholesky factorisation B = L D L^T of B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]].
+    float l21 = b.x;
+    float d22 = max(b.y - b.x * b.x, 1e-12f);
+    float l31 = b.y;
+    float l32 = (b.z - b.x * b.y) / d22;
+    float d33 = max(b.w - b.y * b.y - l32 * l32 * d22, 1e-12f);
+    // Solve B c = (1, z, z^2): forward substitution, diagonal, back substitution.
+    float y2 = depth - l21;
+    float y3 = depth * depth - l31 - l32 * y2;
+    float c3 = y3 / d33;
+    float c2 = y2 / d22 - l32 * c3;
+    float c1 = 1.0f - l21 * c2 - l31 * c3;
+    // Roots of c3 z^2 + c2 z + c1 = 0.
+    float safeC3 = abs(c3) > 1e-20f ? c3 : (c3 < 0.0f ? -1e-20f : 1e-20f);
+    float p = c2 / safeC3;
+    float q = c1 / safeC3;
+    float root = sqrt(max(0.25f * p * p - q, 0.0f));
+    float z2 = -0.5f * p - root;
+    float z3 = -0.5f * p + root;
+    float shadow;
+    if (depth <= z2) {
+        shadow = 0.0f;
+    } else if (depth <= z3) {
+        shadow = (depth * z3 - b.x * (depth + z3) + b.y) / max((z3 - z2) * (depth - z2), 1e-20f);
+    } else {
+        shadow = 1.0f - (z2 * z3 - b.x * (z2 + z3) + b.y) / max((depth - z2) * (depth - z3), 1e-20f);
+    }
+    float visibility = 1.0f - shadow;
+    return visibility == visibility ? gsSaturate(visibility) : 1.0f; // NaN only from NaN input: treat as lit
+}
+
+// The optimised moment basis of Peters & Klein 2015 ("Optimized Moment Quantization"): an affine transform that
+// makes (z, z^2, z^3, z^4) fit 16-bit unorm storage with little error. Columns hold the published matrix's rows.
+const mat4 GS_MSM_QUANTIZE = mat4(-2.07224649f, 13.7948857237f, 0.105877704f, 9.7924062118f,
+                                  32.23703778f, -59.4683975703f, -1.9077466311f, -33.7652110555f,
+                                  -68.571074599f, 82.0359750338f, 9.3496555107f, 47.9456096605f,
+                                  39.3703274134f, -35.364903257f, -6.6543490743f, -23.9728048165f);
+const vec4 GS_MSM_QUANTIZE_OFFSET = vec4(0.035955884801f, 0.0f, 0.0f, 0.0f);
+
+vec4 gsMsmMoments(float depth) {
+    float square = depth * depth;
+    return vec4(depth, square, square * depth, square * square);
+}
+
+vec4 gsMsmQuantize(vec4 moments) { return GS_MSM_QUANTIZE * moments + GS_MSM_QUANTIZE_OFFSET; }
+
+// `inverseQuantize` is inverse(GS_MSM_QUANTIZE), computed once on the CPU.
+vec4 gsMsmDequantize(vec4 quantized, mat4 inverseQuantize) {
+    return inverseQuantize * (quantized - GS_MSM_QUANTIZE_OFFSET);
+}
+
+// Pixel shader branching (soft shadows reference): the test taps' hard comparisons decide whether the pixel can
+// be in a penumbra. Returns true when they all agree (fully lit or fully shadowed: no more taps needed).
+bool gsTestTapsAgree(float litCount, float testCount) { return litCount == 0.0f || litCount == testCount; }
