@@ -171,6 +171,20 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
                      classificationImage(options_.size, classes, visibility));
     engine::writePng(folder / (config.label + "-error.png"),
                      errorHeatMap(options_.size, classes, scene.truth_, visibility));
+    if (config.settings.technique == shadows::ShadowTechnique::JitteredPcf &&
+        config.settings.earlyOutTestTaps > 0) {
+        shadows::ShadowSettings kernelView = config.settings;
+        kernelView.debugView = shadows::ShadowDebugView::FullKernel;
+        module.setSettings(kernelView);
+        std::size_t covered = 0;
+        std::size_t full = 0;
+        for (const glm::vec4& pixel :
+             renderFloat(engine, scene.loaded_.scene, scene.camera_, options_.size)) {
+            covered += pixel.w > 0.5f;
+            full += pixel.w > 0.5f && pixel.x > 0.5f;
+        }
+        result.fullKernelFraction = covered ? static_cast<double>(full) / static_cast<double>(covered) : 0.0;
+    }
     return result;
 }
 
@@ -208,7 +222,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
     std::ostringstream csv;
     csv << "scene,label,technique,layout,taps,radius,resolution,format,acne_rate,leak_rate,darkening,"
            "concave_darkening,mae,rmse,receivers,lit,shadowed,band,concave,band_pixels,shadow_ms_median,"
-           "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes\n";
+           "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
+           "full_kernel_fraction\n";
     for (const BenchResult& r : results) {
         const shadows::ShadowSettings& s = r.config.settings;
         const ShadowMetrics& m = r.metrics;
@@ -219,7 +234,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << m.rootMeanSquareError << ',' << m.receivers << ',' << m.lit << ',' << m.shadowed << ','
             << m.band << ',' << m.concave << ',' << r.bandPixels << ',' << r.shadowPass.median << ','
             << r.shadowPass.min << ',' << r.shadowPass.max << ',' << r.lightingPass.median << ','
-            << r.lightingPass.min << ',' << r.lightingPass.max << ',' << r.shadowBytes << '\n';
+            << r.lightingPass.min << ',' << r.lightingPass.max << ',' << r.shadowBytes << ','
+            << r.fullKernelFraction << '\n';
     }
     return csv.str();
 }
@@ -263,6 +279,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::stri
              {"lightingPassMs",
               {{"median", r.lightingPass.median}, {"min", r.lightingPass.min}, {"max", r.lightingPass.max}}},
              {"shadowBytes", r.shadowBytes},
+             {"fullKernelFraction", r.fullKernelFraction},
              {"image", r.shadedImage.string()}});
     }
     document["results"] = list;

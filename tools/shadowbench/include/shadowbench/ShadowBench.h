@@ -39,6 +39,9 @@ struct BenchResult {
     PassTiming lightingPass;
     std::size_t shadowBytes = 0;
     int bandPixels = 0;
+    /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
+    /// candidates); negative for every other configuration.
+    double fullKernelFraction = -1.0;
     std::filesystem::path shadedImage;
     /// The shaded frame (also written to shadedImage), for side-by-side sheets.
     engine::Image shaded;
