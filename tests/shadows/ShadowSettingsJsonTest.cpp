@@ -89,3 +89,58 @@ TEST(ShadowSettingsJsonTest, FilesRoundTripAndMissingFilesAreNamed) {
         EXPECT_NE(std::string(error.what()).find(path.string()), std::string::npos);
     }
 }
+
+// Robustness (see docs/ROBUSTNESS.md): each of these used to escape as another exception, crash or misread.
+
+TEST(ShadowSettingsJsonTest, NumberTooLargeForADoubleIsASettingsError) {
+    // Found by the fuzzer: nlohmann::json reports the overflow as out_of_range, not parse_error, and it
+    // escaped settingsFromJson.
+    try {
+        (void)settingsFromJson(R"({"pcfRadius": 73.5e3844073709551615})", "my.json");
+        FAIL();
+    } catch (const SettingsError& error) {
+        EXPECT_NE(std::string(error.what())
+                      .find("my.json: not valid JSON: [json.exception.out_of_range.406] "
+                            "number overflow"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
+TEST(ShadowSettingsJsonTest, DeeplyNestedValuesAreDescribedWithoutRecursion) {
+    // The error message used to dump the value, recursing once per level: a stack overflow at this depth.
+    const std::size_t depth = 1'000'000;
+    const std::string text = R"({"technique": )" + std::string(depth, '[') + std::string(depth, ']') + "}";
+    try {
+        (void)settingsFromJson(text, "my.json");
+        FAIL();
+    } catch (const SettingsError& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("my.json: field 'technique': an array is not one of ", 0),
+                  0u)
+            << error.what();
+    }
+}
+
+TEST(ShadowSettingsJsonTest, UnsignedNumbersBeyondInt64AreOutOfRange) {
+    // 18446744073709551615 used to be read as -1 (and reported as "resolution -1 is outside ...").
+    try {
+        (void)settingsFromJson(R"({"resolution": 18446744073709551615})", "my.json");
+        FAIL();
+    } catch (const SettingsError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "my.json: field 'resolution': 18446744073709551615 is out of range");
+    }
+}
+
+TEST(ShadowSettingsJsonTest, LongStringsAreCutInMessages) {
+    try {
+        (void)settingsFromJson(R"({"technique": ")" + std::string(100000, 'x') + R"("})", "my.json");
+        FAIL();
+    } catch (const SettingsError& error) {
+        EXPECT_LT(std::string(error.what()).size(), 1000u);
+        EXPECT_NE(
+            std::string(error.what()).find(R"(: "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx... is not one of )"),
+            std::string::npos)
+            << error.what();
+    }
+}

@@ -8,10 +8,18 @@
 
 namespace shadows::glsl {
 
+// Internal linkage: every translation unit that includes this gets its own copy, like a shader does.
+namespace {
+// A translation unit uses only some of the shader's functions, like a shader variant does.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+
 using namespace glm;
 
 #define GS_OUT(T) T&
 #include "../../shaders/shadows/visibility.glsl"
 #undef GS_OUT
 
+#pragma GCC diagnostic pop
+} // namespace
 } // namespace shadows::glsl
