@@ -1,0 +1,225 @@
+// gs-stability: renders every shadow technique at numerical extremes (grazing and perpendicular light, tiny
+// and huge scenes, extreme near/far ratios, map sizes, depth formats, degenerate and NaN geometry,
+// subdivision levels) and checks that visibility stays finite, within [0,1] and monotone in bias. Writes a
+// Markdown table; exits 1 on any failure.
+#include <content/GltfLoader.h>
+#include <engine/Engine.h>
+#include <engine/Error.h>
+#include <engine/HeadlessContext.h>
+#include <engine/Image.h>
+#include <engine/Primitives.h>
+#include <engine/RenderTarget.h>
+#include <shadows/ShadowModule.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace {
+
+struct Case {
+    std::string name;
+    std::function<engine::Scene()> scene;
+    int resolution = 256;
+    shadows::DepthFormat format = shadows::DepthFormat::D24;
+    float biasScale = 1.0f; // world units of the bias step (scenes are scaled)
+};
+
+/// A box on a plane at `scale`, lit from `elevationDegrees`, seen by a camera with the given near/far ratio.
+engine::Scene boxScene(float scale, float elevationDegrees, float nearFarRatio = 1e3f,
+                       bool edgeOnCamera = false) {
+    engine::Scene scene;
+    auto plane = std::make_shared<engine::MeshData>(engine::primitives::plane(20.0f * scale, 4));
+    const auto ground = scene.create("ground");
+    scene.entity(ground).mesh = engine::MeshComponent{plane};
+    const auto box = scene.create("box");
+    scene.entity(box).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(2.0f * scale))};
+    scene.entity(box).transform.translation = {0.0f, scale, 0.0f};
+    const float elevation = glm::radians(elevationDegrees);
+    const glm::vec3 from(0.6f * std::cos(elevation), std::sin(elevation), 0.8f * std::cos(elevation));
+    const auto sun = scene.create("sun");
+    scene.entity(sun).light = engine::LightComponent{};
+    scene.entity(sun).transform = engine::Transform::lookAt(10.0f * scale * from, {0, 0, 0});
+    const auto camera = scene.create("camera");
+    engine::CameraComponent lens;
+    lens.farPlane = 60.0f * scale;
+    lens.nearPlane = lens.farPlane / nearFarRatio;
+    scene.entity(camera).camera = lens;
+    scene.entity(camera).transform = edgeOnCamera
+                                         ? engine::Transform::lookAt({-8.0f * scale, 0.0f, 0.0f}, {0, 0, 0})
+                                         : engine::Transform::lookAt(glm::vec3(4, 6, 9) * scale, {0, 0, 0});
+    return scene;
+}
+
+engine::Scene withBrokenMesh(bool nan) {
+    engine::Scene scene = boxScene(1.0f, 40.0f);
+    auto broken = std::make_shared<engine::MeshData>();
+    // Zero-area triangles: a repeated vertex, and three collinear ones.
+    broken->positions = {{0, 3, 0}, {0, 3, 0}, {1, 3, 0}, {2, 3, 0}, {3, 3, 0}, {1, 3, 1}};
+    broken->indices = {0, 1, 2, 2, 3, 4};
+    if (nan) {
+        broken->positions[5].y = std::numeric_limits<float>::quiet_NaN();
+        broken->indices.insert(broken->indices.end(), {0, 2, 5});
+    }
+    const auto id = scene.create(nan ? "nan-mesh" : "zero-area");
+    scene.entity(id).mesh = engine::MeshComponent{broken};
+    return scene;
+}
+
+engine::Scene knobScene(int level) {
+    content::SceneLoadOptions options;
+    options.subdivisionLevel = level;
+    return content::GltfLoader::load(std::filesystem::path(GS_CONTENT_DIR) / "scenes" / "knob.gltf", options)
+        .scene;
+}
+
+std::vector<Case> cases(bool full) {
+    std::vector<Case> list;
+    for (const float elevation : {90.0f, 45.0f, 10.0f, 1.0f, 0.1f, 0.01f, 0.0f}) {
+        std::ostringstream name;
+        name << "elevation " << elevation << "°" << (elevation == 90.0f ? " (light along the normal)" : "")
+             << (elevation == 0.0f ? " (exactly grazing)" : "");
+        list.push_back({name.str(), [=] { return boxScene(1.0f, elevation); }});
+    }
+    for (const float scale : {1e-3f, 1e3f, 1e5f}) {
+        std::ostringstream name;
+        name << "scene scale " << scale;
+        list.push_back(
+            {name.str(), [=] { return boxScene(scale, 40.0f); }, 256, shadows::DepthFormat::D24, scale});
+    }
+    list.push_back({"near/far 1e6", [] { return boxScene(1.0f, 40.0f, 1e6f); }});
+    list.push_back({"edge-on camera (det = 0)", [] { return boxScene(1.0f, 40.0f, 1e3f, true); }});
+    list.push_back({"zero-area triangles", [] { return withBrokenMesh(false); }});
+    list.push_back({"NaN vertex in a mesh", [] { return withBrokenMesh(true); }});
+    for (const auto format : {shadows::DepthFormat::D16, shadows::DepthFormat::D32F}) {
+        list.push_back({std::string("format ") + std::string(shadows::toString(format)),
+                        [] { return boxScene(1.0f, 40.0f); }, 256, format});
+    }
+    for (const int resolution : full ? std::vector<int>{64, 8192} : std::vector<int>{64}) {
+        list.push_back(
+            {"map " + std::to_string(resolution), [] { return boxScene(1.0f, 40.0f); }, resolution});
+    }
+    for (const int level : full ? std::vector<int>{0, 3, 6} : std::vector<int>{0, 2}) {
+        list.push_back({"knob level " + std::to_string(level), [=] { return knobScene(level); }});
+    }
+    return list;
+}
+
+struct Check {
+    std::size_t nonFinite = 0;
+    std::size_t outOfRange = 0;
+    std::size_t notMonotone = 0;
+    std::size_t covered = 0;
+    [[nodiscard]] bool ok() const {
+        return nonFinite == 0 && outOfRange == 0 && notMonotone * 1000 <= covered;
+    }
+};
+
+std::vector<float> visibility(engine::Engine& engine, shadows::ShadowModule& module,
+                              const engine::Scene& scene, shadows::ShadowSettings settings, glm::ivec2 size) {
+    settings.debugView = shadows::ShadowDebugView::Visibility;
+    module.setSettings(settings);
+    engine::RenderTarget target(size, engine::ColorFormat::Rgba32F);
+    engine.renderFrame(scene, *scene.firstCamera(), target);
+    return target.readPixelsFloat();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    bool full = false;
+    std::filesystem::path out;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--full") {
+            full = true;
+        } else if (arg == "--out" && i + 1 < argc) {
+            out = argv[++i];
+        } else {
+            std::cerr << "usage: gs-stability [--full] [--out STABILITY.md]\n";
+            return 2;
+        }
+    }
+    try {
+        engine::HeadlessContext context;
+        const glm::ivec2 size(96, 72);
+        std::ostringstream table;
+        table << "| case | ";
+        for (const auto technique : shadows::allTechniques()) {
+            table << shadows::toString(technique) << " | ";
+        }
+        table << "\n| --- |";
+        for (std::size_t t = 0; t < shadows::allTechniques().size(); ++t) {
+            table << " --- |";
+        }
+        table << "\n";
+        bool allOk = true;
+        for (const Case& c : cases(full)) {
+            const engine::Scene scene = c.scene();
+            table << "| " << c.name << " |";
+            for (const auto technique : shadows::allTechniques()) {
+                engine::Engine engine;
+                auto& module = static_cast<shadows::ShadowModule&>(
+                    engine.addModule(std::make_unique<shadows::ShadowModule>()));
+                shadows::ShadowSettings settings;
+                settings.technique = technique;
+                settings.resolution = c.resolution;
+                settings.depthFormat = c.format;
+                settings.constantBias = 0.002f * c.biasScale;
+                const std::vector<float> less = visibility(engine, module, scene, settings, size);
+                settings.constantBias = 0.02f * c.biasScale;
+                const std::vector<float> more = visibility(engine, module, scene, settings, size);
+                Check check;
+                for (std::size_t i = 0; i < less.size(); i += 4) {
+                    if (less[i + 3] < 0.5f) {
+                        continue;
+                    }
+                    ++check.covered;
+                    for (const float v : {less[i], more[i]}) {
+                        check.nonFinite += !std::isfinite(v);
+                        check.outOfRange += std::isfinite(v) && (v < 0.0f || v > 1.0f);
+                    }
+                    // More bias moves receivers towards the light: visibility may only grow (0.02 tolerance
+                    // for jitter patterns that shift with the map's fit).
+                    check.notMonotone += more[i] < less[i] - 0.02f;
+                }
+                allOk = allOk && check.ok();
+                table << " " << (check.ok() ? "ok" : "FAIL");
+                if (check.nonFinite || check.outOfRange || check.notMonotone) {
+                    table << " (" << check.nonFinite << " NaN/Inf, " << check.outOfRange << " out of [0,1], "
+                          << check.notMonotone << "/" << check.covered << " not monotone)";
+                }
+                table << " |";
+            }
+            table << "\n";
+            std::cerr << "stability: " << c.name << " done\n";
+        }
+        std::ostringstream document;
+        document
+            << "# Numerical stability\n\nGenerated by `./build/bin/gs-stability --full --out "
+               "docs/STABILITY.md` on "
+            << context.renderer() << ". Every technique renders each case at " << size.x << "x" << size.y
+            << " twice, with constant bias 0.002 and 0.02 (times the scene scale); a cell is ok when no "
+               "visible "
+               "pixel is NaN/Inf or outside [0,1] and at most 0.1 % of pixels lose more than 0.02 visibility "
+               "when the bias grows. The float mirror of the shader math against double precision is "
+               "measured "
+               "by `ShadowsTest --gtest_filter='Stability*'` (max |float - double|: fuzzy comparison 3e-8, "
+               "PCF "
+               "over GSM 0.010 at slope 10 per texel, MSM 4.6e-4).\n\n"
+            << table.str();
+        std::cout << document.str();
+        if (!out.empty()) {
+            engine::writeTextFile(out, document.str());
+        }
+        return allOk ? 0 : 1;
+    } catch (const engine::Error& error) {
+        std::cerr << "gs-stability: " << error.what() << "\n";
+        return 1;
+    }
+}
