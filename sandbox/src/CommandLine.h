@@ -1,0 +1,45 @@
+#pragma once
+
+#include "SandboxSettings.h"
+#include "SceneCatalog.h"
+
+#include <glm/vec2.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace sandbox {
+
+/// @brief The parsed command line of gs-sandbox: mode, outputs, and the settings to start from (the
+/// --settings file, then --scene/--level/--technique/--compare/--shadow-size on top, in that order).
+struct CommandLine {
+    /// Render to a PNG through EGL instead of opening a window.
+    bool headless = false;
+    /// Print the usage and exit.
+    bool help = false;
+    SandboxSettings settings;
+    /// The --settings file, if any (the window's save/load path starts there).
+    std::optional<std::filesystem::path> settingsFile;
+    /// Headless: the PNG to write.
+    std::filesystem::path out = "sandbox.png";
+    /// Windowed: where screenshots go (F12, the button, and after --frames N frames).
+    std::optional<std::filesystem::path> screenshot;
+    /// Window or image size in pixels.
+    glm::ivec2 size{1280, 720};
+    /// Frames to render: headless renders this many and writes the last (default 1); the window closes
+    /// after this many (default: when closed).
+    std::optional<int> frames;
+    /// Windowed: show the panels at start (F1 toggles).
+    bool showUi = true;
+
+    /// @brief Parses `arguments` (without the program name). Throws SandboxError naming the option for a
+    /// bad value, an unknown technique or scene (checked against `catalog`), or a bad settings file.
+    static CommandLine parse(std::span<const std::string_view> arguments, const SceneCatalog& catalog);
+
+    /// @brief The --help text.
+    static std::string_view usage();
+};
+
+} // namespace sandbox

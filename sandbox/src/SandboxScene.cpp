@@ -1,0 +1,145 @@
+#include "SandboxScene.h"
+
+#include "ParameterTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sandbox {
+
+namespace {
+
+/// Unit vector from the scene towards a light at these angles.
+glm::vec3 towardsLight(const SandboxSettings::LightAngles& angles) {
+    const float azimuth = glm::radians(angles.azimuth);
+    const float elevation = glm::radians(angles.elevation);
+    return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+            std::cos(elevation) * std::cos(azimuth)};
+}
+
+glm::vec3 position(const glm::mat4& world) {
+    return glm::vec3(world[3]);
+}
+glm::vec3 forward(const glm::mat4& world) {
+    return glm::normalize(-glm::vec3(world[2]));
+}
+
+} // namespace
+
+SandboxScene::SandboxScene(const std::filesystem::path& path, int level)
+    : loaded_(content::GltfLoader::load(path, content::SceneLoadOptions{level})) {
+    engine::Scene& scene = loaded_.scene;
+    glm::vec3 low(std::numeric_limits<float>::max());
+    glm::vec3 high(std::numeric_limits<float>::lowest());
+    scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+        if (entity.light && light_ == engine::kNoEntity) {
+            light_ = id;
+        }
+        if (!entity.mesh || !entity.mesh->mesh) {
+            return;
+        }
+        const glm::mat4 world = scene.worldMatrix(id);
+        for (const glm::vec3& p : entity.mesh->mesh->positions) {
+            const glm::vec3 q = glm::vec3(world * glm::vec4(p, 1.0f));
+            low = glm::min(low, q);
+            high = glm::max(high, q);
+        }
+        triangles_ += entity.mesh->mesh->triangleCount();
+    });
+    const bool hasMeshes = low.x <= high.x;
+    centre_ = hasMeshes ? (low + high) * 0.5f : glm::vec3(0.0f);
+    const float radius = hasMeshes ? std::max(glm::length(high - low) * 0.5f, 0.01f) : 1.0f;
+
+    if (const auto camera = scene.firstCamera()) {
+        camera_ = *camera;
+    } else {
+        camera_ = scene.create("sandbox camera");
+        scene.entity(camera_).camera = engine::CameraComponent{};
+        scene.entity(camera_).camera->farPlane = std::max(100.0f, radius * 10.0f);
+        OrbitCamera framing;
+        framing.target = centre_;
+        framing.yaw = 35.0f;
+        framing.pitch = 25.0f;
+        framing.distance = radius * 2.5f;
+        scene.entity(camera_).transform = framing.transform();
+        loaded_.warnings.push_back("the scene has no camera: the sandbox added one framing the meshes");
+    }
+    if (light_ == engine::kNoEntity) {
+        light_ = scene.create("sandbox light");
+        scene.entity(light_).light = engine::LightComponent{};
+        scene.entity(light_).transform =
+            engine::Transform::lookAt(centre_ + towardsLight({45.0f, 40.0f}) * radius * 2.0f, centre_);
+        loaded_.warnings.push_back("the scene has no light: the sandbox added a directional light");
+    }
+    fileCamera_ = scene.entity(camera_).transform;
+    fileLight_ = scene.entity(light_).transform;
+
+    const glm::mat4 lightWorld = scene.worldMatrix(light_);
+    const glm::vec3 lightPosition = position(lightWorld);
+    const glm::vec3 lightForward = forward(lightWorld);
+    const float along = glm::dot(centre_ - lightPosition, lightForward);
+    lightDistance_ = along > radius * 0.1f ? along : radius * 2.0f;
+    lightPivot_ = lightPosition + lightForward * lightDistance_;
+}
+
+engine::LightType SandboxScene::lightType() const {
+    return loaded_.scene.entity(light_).light->type;
+}
+
+SandboxSettings::LightAngles SandboxScene::fileLightAngles() const {
+    // The light's own transform may be overridden by apply(); read the file's through its parent.
+    const engine::Entity& entity = loaded_.scene.entity(light_);
+    const glm::mat4 parent =
+        entity.parent == engine::kNoEntity ? glm::mat4(1.0f) : loaded_.scene.worldMatrix(entity.parent);
+    const glm::vec3 toLight = -forward(parent * fileLight_.matrix());
+    SandboxSettings::LightAngles angles;
+    angles.elevation = std::clamp(glm::degrees(std::asin(std::clamp(toLight.y, -1.0f, 1.0f))),
+                                  ParameterTable::kElevation.min, ParameterTable::kElevation.max);
+    angles.azimuth = glm::degrees(std::atan2(toLight.x, toLight.z));
+    if (angles.azimuth < 0.0f) {
+        angles.azimuth += 360.0f;
+    }
+    return angles;
+}
+
+OrbitCamera SandboxScene::fileOrbit() const {
+    const engine::Entity& entity = loaded_.scene.entity(camera_);
+    const glm::mat4 parent =
+        entity.parent == engine::kNoEntity ? glm::mat4(1.0f) : loaded_.scene.worldMatrix(entity.parent);
+    const glm::mat4 world = parent * fileCamera_.matrix();
+    return OrbitCamera::lookingFrom(position(world), forward(world), centre_);
+}
+
+void SandboxScene::apply(const std::optional<SandboxSettings::LightAngles>& light,
+                         const std::optional<OrbitCamera>& camera) {
+    engine::Scene& scene = loaded_.scene;
+    if (light) {
+        const glm::vec3 eye = lightPivot_ + towardsLight(*light) * lightDistance_;
+        setWorldTransform(light_, engine::Transform::lookAt(eye, lightPivot_));
+    } else {
+        scene.entity(light_).transform = fileLight_;
+    }
+    if (camera) {
+        setWorldTransform(camera_, camera->transform());
+    } else {
+        scene.entity(camera_).transform = fileCamera_;
+    }
+}
+
+void SandboxScene::setWorldTransform(engine::EntityId id, const engine::Transform& world) {
+    engine::Entity& entity = loaded_.scene.entity(id);
+    engine::Transform local = world;
+    local.scale = entity.transform.scale;
+    if (entity.parent != engine::kNoEntity) {
+        // Express the world pose in the parent's frame (parent scale is assumed uniform, as in our content).
+        const glm::mat4 parent = loaded_.scene.worldMatrix(entity.parent);
+        local.translation = glm::vec3(glm::inverse(parent) * glm::vec4(world.translation, 1.0f));
+        const glm::mat3 rotation(glm::normalize(glm::vec3(parent[0])), glm::normalize(glm::vec3(parent[1])),
+                                 glm::normalize(glm::vec3(parent[2])));
+        local.rotation = glm::inverse(glm::quat_cast(rotation)) * world.rotation;
+    }
+    entity.transform = local;
+}
+
+} // namespace sandbox

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "OrbitCamera.h"
+#include "SandboxSettings.h"
+
+#include <content/GltfLoader.h>
+
+#include <engine/Scene.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sandbox {
+
+/// @brief A loaded scene with the handles the sandbox steers: its first camera and its first light.
+///
+/// A scene without a camera gets one framing its meshes, a scene without a light gets a directional light
+/// (each noted in warnings()). The file's camera and light transforms are kept so that settings without a
+/// camera or light direction always show the scene as the file has it.
+class SandboxScene {
+public:
+    /// @brief Loads `path` with subdivision `level` (-1 = each node's own). Throws content::ContentError.
+    SandboxScene(const std::filesystem::path& path, int level);
+
+    [[nodiscard]] const engine::Scene& scene() const { return loaded_.scene; }
+    [[nodiscard]] engine::EntityId camera() const { return camera_; }
+    [[nodiscard]] engine::LightType lightType() const;
+    /// @brief Loader warnings plus what the sandbox added.
+    [[nodiscard]] const std::vector<std::string>& warnings() const { return loaded_.warnings; }
+    /// @brief Triangles of every mesh.
+    [[nodiscard]] std::size_t triangles() const { return triangles_; }
+
+    /// @brief The direction the file's first light comes from (elevation clamped to
+    /// ParameterTable::kElevation).
+    [[nodiscard]] SandboxSettings::LightAngles fileLightAngles() const;
+    /// @brief The orbit that reproduces the file's camera, orbiting the meshes' centre.
+    [[nodiscard]] OrbitCamera fileOrbit() const;
+
+    /// @brief Points the first light from `light` (or restores the file's) and places the camera at `camera`
+    /// (or restores the file's). A spot light keeps its distance to the point its axis passes closest to the
+    /// meshes' centre, so it swings around what it lit.
+    void apply(const std::optional<SandboxSettings::LightAngles>& light,
+               const std::optional<OrbitCamera>& camera);
+
+private:
+    void setWorldTransform(engine::EntityId id, const engine::Transform& world);
+
+    content::LoadedScene loaded_;
+    engine::EntityId camera_ = engine::kNoEntity;
+    engine::EntityId light_ = engine::kNoEntity;
+    engine::Transform fileCamera_;
+    engine::Transform fileLight_;
+    glm::vec3 centre_{0.0f};
+    glm::vec3 lightPivot_{0.0f};
+    float lightDistance_ = 1.0f;
+    std::size_t triangles_ = 0;
+};
+
+} // namespace sandbox

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sandbox {
+
+/// @brief The content scenes (content/scenes/NAME.gltf) and how scene names given by people resolve to files.
+class SceneCatalog {
+public:
+    explicit SceneCatalog(std::filesystem::path contentFolder);
+
+    /// @brief Names of the content scenes, sorted.
+    [[nodiscard]] const std::vector<std::string>& names() const { return names_; }
+
+    /// @brief The file of `scene`: a bare name is a content scene; anything with a folder or a .gltf/.glb
+    /// extension is a path. Throws SandboxError when the content scene or the file does not exist (listing
+    /// the content scenes).
+    [[nodiscard]] std::filesystem::path resolve(const std::string& scene) const;
+
+private:
+    std::filesystem::path scenesFolder_;
+    std::vector<std::string> names_;
+};
+
+} // namespace sandbox
