@@ -45,21 +45,17 @@ double median(std::vector<float> values) {
 
 } // namespace
 
-BenchScene::BenchScene(std::string name, content::LoadedScene loaded, const BenchOptions& options)
-    : name_(std::move(name)), loaded_(std::move(loaded)) {
-    const auto camera = loaded_.scene.firstCamera();
-    if (!camera) {
-        throw engine::Error("shadowbench: scene '" + name_ + "' has no camera");
-    }
-    camera_ = *camera;
+BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId camera,
+                       const BenchOptions& options)
+    : name_(std::move(name)), scene_(std::move(scene)), camera_(camera) {
     // The G-buffer: where each pixel's surface is and which way it faces, without any module.
     engine::Engine gbuffer;
     gbuffer.renderer().output = engine::OutputMode::WorldPosition;
-    const auto positions = renderFloat(gbuffer, loaded_.scene, camera_, options.size);
+    const auto positions = renderFloat(gbuffer, scene_, camera_, options.size);
     gbuffer.renderer().output = engine::OutputMode::WorldNormal;
-    const auto normals = renderFloat(gbuffer, loaded_.scene, camera_, options.size);
+    const auto normals = renderFloat(gbuffer, scene_, camera_, options.size);
     const engine::FrameContext frame =
-        gbuffer.renderer().beginFrame(loaded_.scene, camera_, engine::FrameTarget{0, options.size}, 0);
+        gbuffer.renderer().beginFrame(scene_, camera_, engine::FrameTarget{0, options.size}, 0);
     const auto light = std::find_if(frame.lights.begin(), frame.lights.end(),
                                     [](const engine::FrameLight& l) { return l.light.castsShadows; });
     if (light == frame.lights.end()) {
@@ -87,7 +83,7 @@ BenchScene::BenchScene(std::string name, content::LoadedScene loaded, const Benc
     pixelWorldSize_ = static_cast<float>(median(pixelSizes));
     concave_ = concaveMask(options.size, positions_, normals_, covered, 0.5f);
 
-    const RayTracedVisibility tracer(loaded_.scene);
+    const RayTracedVisibility tracer(scene_);
     truth_.resize(positions.size());
     if (options.softSamplesPerAxis > 0) {
         tracer.softVisibility(positions_, normals_, covered, light_, options.softRadius,
@@ -104,7 +100,12 @@ ShadowBench::ShadowBench(const engine::GlContext& context, BenchOptions options)
 
 std::unique_ptr<BenchScene> ShadowBench::prepare(const std::string& name,
                                                  const std::filesystem::path& path) const {
-    return std::make_unique<BenchScene>(name, content::GltfLoader::load(path), options_);
+    content::LoadedScene loaded = content::GltfLoader::load(path);
+    const auto camera = loaded.scene.firstCamera();
+    if (!camera) {
+        throw engine::Error("shadowbench: " + path.string() + " has no camera");
+    }
+    return std::make_unique<BenchScene>(name, std::move(loaded.scene), *camera, options_);
 }
 
 BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config) const {
@@ -117,12 +118,12 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
 
     // Timing: shaded frames, both passes, after a warm-up frame that compiles and uploads.
     engine::RenderTarget shaded(options_.size);
-    engine.renderFrame(scene.loaded_.scene, scene.camera_, shaded);
+    engine.renderFrame(scene.scene_, scene.camera_, shaded);
     engine.setPassTiming(method_);
     std::vector<double> shadowTimes;
     std::vector<double> lightingTimes;
     for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
-        const engine::FrameStats stats = engine.renderFrame(scene.loaded_.scene, scene.camera_, shaded);
+        const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, shaded);
         shadowTimes.push_back(stats.prePassMilliseconds);
         lightingTimes.push_back(stats.lightingMilliseconds);
     }
@@ -135,14 +136,41 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     result.shaded = shaded.readPixels();
     engine::writePng(result.shadedImage, result.shaded);
 
-    // Accuracy: the first shadowed light's visibility per pixel.
-    shadows::ShadowSettings visibilityOnly = config.settings;
+    const Accuracy accuracy = measure(scene, config.settings);
+    result.metrics = accuracy.metrics;
+    result.bandPixels = accuracy.bandPixels;
+    engine::writePng(folder / (config.label + "-classes.png"),
+                     classificationImage(options_.size, accuracy.classes, accuracy.visibility));
+    engine::writePng(folder / (config.label + "-error.png"),
+                     errorHeatMap(options_.size, accuracy.classes, accuracy.truth, accuracy.visibility));
+    if (config.settings.technique == shadows::ShadowTechnique::JitteredPcf &&
+        config.settings.earlyOutTestTaps > 0) {
+        shadows::ShadowSettings kernelView = config.settings;
+        kernelView.debugView = shadows::ShadowDebugView::FullKernel;
+        module.setSettings(kernelView);
+        std::size_t covered = 0;
+        std::size_t full = 0;
+        for (const glm::vec4& pixel : renderFloat(engine, scene.scene_, scene.camera_, options_.size)) {
+            covered += pixel.w > 0.5f;
+            full += pixel.w > 0.5f && pixel.x > 0.5f;
+        }
+        result.fullKernelFraction = covered ? static_cast<double>(full) / static_cast<double>(covered) : 0.0;
+    }
+    return result;
+}
+
+Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const {
+    engine::Engine engine;
+    shadows::ShadowSettings visibilityOnly = settings;
     visibilityOnly.debugView = shadows::ShadowDebugView::Visibility;
-    module.setSettings(visibilityOnly);
-    const auto pixels = renderFloat(engine, scene.loaded_.scene, scene.camera_, options_.size);
-    std::vector<float> visibility(pixels.size());
+    auto& module = static_cast<shadows::ShadowModule&>(
+        engine.addModule(std::make_unique<shadows::ShadowModule>(visibilityOnly)));
+    const auto pixels = renderFloat(engine, scene.scene_, scene.camera_, options_.size);
+    Accuracy accuracy;
+    accuracy.truth = scene.truth_;
+    accuracy.visibility.resize(pixels.size());
     for (std::size_t i = 0; i < pixels.size(); ++i) {
-        visibility[i] = pixels[i].x;
+        accuracy.visibility[i] = pixels[i].x;
     }
     // The band is a number of shadow texels; convert to pixels with the median texel and pixel footprints.
     float texelWorld = 0.0f;
@@ -159,33 +187,14 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
             texelWorld *= static_cast<float>(median(distances));
         }
     }
-    result.bandPixels = scene.pixelWorldSize_ > 0.0f
-                            ? std::clamp(static_cast<int>(std::ceil(options_.bandTexels * texelWorld /
-                                                                    scene.pixelWorldSize_)),
-                                         1, 32)
-                            : 1;
-    const std::vector<PixelClass> classes =
-        classify(options_.size, scene.truth_, scene.receivers_, result.bandPixels);
-    result.metrics = computeMetrics(classes, scene.truth_, visibility, scene.concave_);
-    engine::writePng(folder / (config.label + "-classes.png"),
-                     classificationImage(options_.size, classes, visibility));
-    engine::writePng(folder / (config.label + "-error.png"),
-                     errorHeatMap(options_.size, classes, scene.truth_, visibility));
-    if (config.settings.technique == shadows::ShadowTechnique::JitteredPcf &&
-        config.settings.earlyOutTestTaps > 0) {
-        shadows::ShadowSettings kernelView = config.settings;
-        kernelView.debugView = shadows::ShadowDebugView::FullKernel;
-        module.setSettings(kernelView);
-        std::size_t covered = 0;
-        std::size_t full = 0;
-        for (const glm::vec4& pixel :
-             renderFloat(engine, scene.loaded_.scene, scene.camera_, options_.size)) {
-            covered += pixel.w > 0.5f;
-            full += pixel.w > 0.5f && pixel.x > 0.5f;
-        }
-        result.fullKernelFraction = covered ? static_cast<double>(full) / static_cast<double>(covered) : 0.0;
-    }
-    return result;
+    accuracy.bandPixels = scene.pixelWorldSize_ > 0.0f
+                              ? std::clamp(static_cast<int>(std::ceil(options_.bandTexels * texelWorld /
+                                                                      scene.pixelWorldSize_)),
+                                           1, 32)
+                              : 1;
+    accuracy.classes = classify(options_.size, scene.truth_, scene.receivers_, accuracy.bandPixels);
+    accuracy.metrics = computeMetrics(accuracy.classes, scene.truth_, accuracy.visibility, scene.concave_);
+    return accuracy;
 }
 
 shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, const std::string& source) {

@@ -47,6 +47,15 @@ struct BenchResult {
     engine::Image shaded;
 };
 
+/// @brief One technique's visibility against ground truth over one view.
+struct Accuracy {
+    ShadowMetrics metrics;
+    std::vector<PixelClass> classes;
+    std::vector<float> visibility;
+    std::vector<float> truth;
+    int bandPixels = 0;
+};
+
 /// @brief Options of a benchmark run.
 struct BenchOptions {
     /// Image size in pixels. Default 640x480.
@@ -66,7 +75,9 @@ struct BenchOptions {
 /// @brief A scene prepared for measurement: its G-buffer and ray-traced ground truth, computed once.
 class BenchScene {
 public:
-    BenchScene(std::string name, content::LoadedScene loaded, const BenchOptions& options);
+    /// @brief Prepares `scene` seen from `camera` (a copy is kept) at `options.size`. Throws engine::Error
+    /// when the scene has no shadow-casting light.
+    BenchScene(std::string name, engine::Scene scene, engine::EntityId camera, const BenchOptions& options);
     ~BenchScene();
 
     [[nodiscard]] const std::string& name() const { return name_; }
@@ -74,7 +85,7 @@ public:
 private:
     friend class ShadowBench;
     std::string name_;
-    content::LoadedScene loaded_;
+    engine::Scene scene_;
     engine::EntityId camera_ = engine::kNoEntity;
     engine::FrameLight light_;
     std::vector<glm::vec3> positions_;
@@ -97,6 +108,9 @@ public:
 
     /// @brief Measures one configuration on one scene and writes its images.
     BenchResult run(const BenchScene& scene, const BenchConfig& config) const;
+
+    /// @brief Accuracy of `settings` against the scene's ground truth (no timing, nothing written).
+    [[nodiscard]] Accuracy measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const;
 
     [[nodiscard]] engine::TimingMethod timingMethod() const { return method_; }
     [[nodiscard]] const BenchOptions& options() const { return options_; }
