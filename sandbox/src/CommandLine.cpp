@@ -25,6 +25,7 @@ Explore shadow techniques side by side: a window with controls, or --headless to
   --frames N        headless: frames to render, the last is written [1];
                     windowed: close after N frames [run until closed]
   --out FILE        headless: PNG to write                                           [sandbox.png]
+  --ground-truth F  headless: measure side A against ray-traced truth, write the acne/leak overlay to F
   --screenshot FILE windowed: PNG for F12/the button, written after the last --frames frame too
                                                                                       [sandbox-screenshot.png]
   --no-ui           windowed: start with the panels hidden (F1 shows them)
@@ -115,6 +116,9 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
             line.frames = parseInt(option, value(), 1, 1000000);
         } else if (option == "--out") {
             line.out = value();
+            headlessOnly = option;
+        } else if (option == "--ground-truth") {
+            line.groundTruth = value();
             headlessOnly = option;
         } else if (option == "--screenshot") {
             line.screenshot = value();

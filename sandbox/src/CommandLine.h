@@ -24,6 +24,8 @@ struct CommandLine {
     std::optional<std::filesystem::path> settingsFile;
     /// Headless: the PNG to write.
     std::filesystem::path out = "sandbox.png";
+    /// Headless: also measure side A against ray-traced ground truth and write the tinted overlay here.
+    std::optional<std::filesystem::path> groundTruth;
     /// Windowed: where screenshots go (F12, the button, and after --frames N frames).
     std::optional<std::filesystem::path> screenshot;
     /// Window or image size in pixels.

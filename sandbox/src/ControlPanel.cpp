@@ -147,6 +147,10 @@ bool ControlPanel::draw(Session& session) {
             drawFiles(session);
             ImGui::InputText("screenshot", &screenshotPath_);
             screenshot = ImGui::Button("Screenshot (F12)");
+            ImGui::SameLine();
+            // Ray casting the view takes a moment: on demand only; the tint stays while the view is
+            // unchanged.
+            groundTruthRequested_ = ImGui::Button("Ground truth (A)") || groundTruthRequested_;
         }
         if (!status_.empty()) {
             ImGui::PushTextWrapPos(0.0f);

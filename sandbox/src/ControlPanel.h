@@ -1,5 +1,7 @@
 #pragma once
 
+#include <utility>
+
 #include "Session.h"
 
 #include <shadows/ShadowSettings.h>
@@ -31,6 +33,8 @@ public:
     [[nodiscard]] std::filesystem::path screenshotPath() const { return screenshotPath_; }
     /// @brief Shows `message` under the panel (red when `error`).
     void setStatus(std::string message, bool error);
+    /// @brief True once after the "Ground truth (A)" button was pressed.
+    bool takeGroundTruthRequest() { return std::exchange(groundTruthRequested_, false); }
 
 private:
     void drawScene(Session& session);
@@ -46,6 +50,7 @@ private:
     std::string renderer_;
     std::string status_;
     bool statusIsError_ = false;
+    bool groundTruthRequested_ = false;
     /// Exponential moving averages of the pass times (shadow, lighting) of sides A and B, milliseconds.
     double smoothed_[2][2] = {{-1.0, -1.0}, {-1.0, -1.0}};
 };

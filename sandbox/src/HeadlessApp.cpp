@@ -1,5 +1,6 @@
 #include "HeadlessApp.h"
 
+#include "GroundTruthOverlay.h"
 #include "Session.h"
 
 #include <engine/HeadlessContext.h>
@@ -37,7 +38,8 @@ int HeadlessApp::run() {
     for (int frame = 0; frame < line_.frames.value_or(1); ++frame) {
         report = session.render({target.framebuffer().id(), target.size()});
     }
-    engine::writePng(line_.out, target.readPixels());
+    const engine::Image image = target.readPixels();
+    engine::writePng(line_.out, image);
 
     const SandboxSettings& settings = session.settings();
     std::cout << "wrote " << line_.out.string() << " (" << line_.size.x << "x" << line_.size.y << ", "
@@ -49,6 +51,12 @@ int HeadlessApp::run() {
     }
     std::cout << "  timing: " << engine::PassTimer::describe(timing) << ", last of "
               << line_.frames.value_or(1) << " frame(s)\n";
+    if (line_.groundTruth) {
+        const GroundTruthView truth = measureGroundTruth(session, image);
+        engine::writePng(*line_.groundTruth, truth.overlay);
+        std::cout << "  ground truth (A): " << truth.summary() << "; overlay " << line_.groundTruth->string()
+                  << "\n";
+    }
     return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "WindowApp.h"
 
 #include "ControlPanel.h"
+#include "GroundTruthOverlay.h"
 #include "ImGuiLayer.h"
 #include "ParameterTable.h"
 #include "Session.h"
@@ -11,6 +12,8 @@
 #include <engine/PassTimer.h>
 #include <engine/RenderTarget.h>
 #include <engine/WindowContext.h>
+#include <engine/gl/Framebuffer.h>
+#include <engine/gl/Texture.h>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -63,6 +66,9 @@ int WindowApp::run() {
                        line_.screenshot.value_or("sandbox-screenshot.png"), timing, window.renderer());
 
     std::optional<engine::RenderTarget> view;
+    std::optional<GroundTruthView> truth;
+    std::optional<engine::gl::Texture> truthTexture;
+    std::optional<engine::gl::Framebuffer> truthFramebuffer;
     FrameReport last;
     bool showUi = line_.showUi;
     KeyEdge toggleUi(GLFW_KEY_F1);
@@ -92,6 +98,35 @@ int WindowApp::run() {
             glDisable(GL_FRAMEBUFFER_SRGB);
             glBlitNamedFramebuffer(view->framebuffer().id(), 0, 0, 0, size.x, size.y, 0, 0, size.x, size.y,
                                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            if (panel.takeGroundTruthRequest()) {
+                try {
+                    truth = measureGroundTruth(session, view->readPixels());
+                    // Upload bottom row first, as GL stores images.
+                    std::vector<std::uint8_t> rows(truth->overlay.pixels.size());
+                    const std::size_t stride = static_cast<std::size_t>(size.x) * 4;
+                    for (int y = 0; y < size.y; ++y) {
+                        std::copy_n(truth->overlay.pixels.begin() +
+                                        static_cast<std::ptrdiff_t>(stride * static_cast<std::size_t>(y)),
+                                    stride,
+                                    rows.begin() + static_cast<std::ptrdiff_t>(
+                                                       stride * static_cast<std::size_t>(size.y - 1 - y)));
+                    }
+                    truthTexture.emplace(GL_RGBA8, size);
+                    glTextureSubImage2D(truthTexture->id(), 0, 0, 0, size.x, size.y, GL_RGBA,
+                                        GL_UNSIGNED_BYTE, rows.data());
+                    truthFramebuffer.emplace("ground truth overlay");
+                    truthFramebuffer->attach(GL_COLOR_ATTACHMENT0, *truthTexture);
+                    panel.setStatus("ground truth (A): " + truth->summary() +
+                                        " (red acne, blue leak, yellow edge band)",
+                                    false);
+                } catch (const engine::Error& error) {
+                    panel.setStatus(error.what(), true);
+                }
+            }
+            if (truth && truth->settings == session.settings() && truth->size == size) {
+                glBlitNamedFramebuffer(truthFramebuffer->id(), 0, 0, 0, size.x, size.y, 0, 0, size.x, size.y,
+                                       GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            }
             const bool lastFrame = line_.frames && frame + 1 == *line_.frames;
             if (screenshot || (lastFrame && line_.screenshot)) {
                 const std::filesystem::path path = panel.screenshotPath();

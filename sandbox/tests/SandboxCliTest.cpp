@@ -50,6 +50,26 @@ TEST(SandboxCliTest, TechniqueAloneFillsTheView) {
     EXPECT_EQ(result.output.find("B "), std::string::npos) << result.output;
 }
 
+TEST(SandboxCliTest, GroundTruthOverlayTintsAcneOfAHardComparison) {
+    const auto folder = sandbox::test::freshFolder("cli-truth");
+    const auto result =
+        runSandbox("--headless " + kSmall + " --technique hard --out " + (folder / "view.png").string() +
+                   " --ground-truth " + (folder / "truth.png").string());
+    ASSERT_EQ(result.status, 0) << result.output;
+    // A hard comparison with the default (tiny) bias self-shadows much of the knob and the ground.
+    const auto at = result.output.find("ground truth (A): acne ");
+    ASSERT_NE(at, std::string::npos) << result.output;
+    EXPECT_GT(std::stod(result.output.substr(at + 23)), 10.0) << result.output;
+    const engine::Image view = sandbox::test::loadPng(folder / "view.png");
+    const engine::Image truth = sandbox::test::loadPng(folder / "truth.png");
+    ASSERT_EQ(truth.size, view.size);
+    std::size_t red = 0;
+    for (std::size_t i = 0; i < truth.pixels.size(); i += 4) {
+        red += truth.pixels[i] > 150 && truth.pixels[i + 1] < 100 && truth.pixels[i + 2] < 100;
+    }
+    EXPECT_GT(red, truth.pixels.size() / 4 / 20); // acne tinted red
+}
+
 TEST(SandboxCliTest, UnknownTechniqueExits2) {
     expectFailure("--headless --technique nope", 2,
                   "--technique: unknown technique 'nope' (hard, slope-scaled, hw-pcf, pcf, gsm,");

@@ -96,7 +96,10 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
 BenchScene::~BenchScene() = default;
 
 ShadowBench::ShadowBench(const engine::GlContext& context, BenchOptions options)
-    : options_(std::move(options)), method_(engine::PassTimer::methodFor(context)) {}
+    : ShadowBench(engine::PassTimer::methodFor(context), std::move(options)) {}
+
+ShadowBench::ShadowBench(engine::TimingMethod method, BenchOptions options)
+    : options_(std::move(options)), method_(method) {}
 
 std::unique_ptr<BenchScene> ShadowBench::prepare(const std::string& name,
                                                  const std::filesystem::path& path) const {

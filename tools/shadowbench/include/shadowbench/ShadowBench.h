@@ -99,7 +99,9 @@ private:
 /// @brief Runs configurations on prepared scenes: accuracy against ground truth and per-pass timing.
 class ShadowBench {
 public:
+    /// @brief Times with the method that suits `context` (PassTimer::methodFor).
     ShadowBench(const engine::GlContext& context, BenchOptions options);
+    ShadowBench(engine::TimingMethod method, BenchOptions options);
 
     /// @brief Loads `path` (a glTF), renders its G-buffer and ray-traces the ground truth for its first
     /// shadow-casting light. Throws engine::Error subclasses naming the file on bad input.
