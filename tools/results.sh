@@ -29,13 +29,14 @@ rm -rf "$work"
 
 # 3. Filtered families: VSM versus MSM light leaking, and early-out speed versus the same jittered kernel.
 "$bench" --scene knob --scene thin-shell --scene spheres --techniques vsm,msm --resolutions 1024 --frames 7 \
-    --config "msm-16bit:technique=msm,msmQuantize16=true" \
-    --config "vsm-no-reduction:technique=vsm,lightBleedingReduction=0" \
-    --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,constantBias=0.12" \
-    --config "jittered32-early8:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=8,constantBias=0.12" \
-    --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,constantBias=0.12" \
-    --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,constantBias=0.12" \
+    --config "msm-16bit:technique=msm,msmQuantize16=true,resolution=1024" \
+    --config "vsm-no-reduction:technique=vsm,lightBleedingReduction=0,resolution=1024" \
+    --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,constantBias=0.12,resolution=1024" \
+    --config "jittered32-early8:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=8,constantBias=0.12,resolution=1024" \
+    --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,constantBias=0.12,resolution=1024" \
+    --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,constantBias=0.12,resolution=1024" \
     --out "$work/filtered"
 
-python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
+# Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
+/usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
 echo "wrote docs/RESULTS.md"
