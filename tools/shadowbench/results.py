@@ -43,9 +43,12 @@ def pareto(rows):
 def plot(rows, scene, path):
     fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
     families = sorted({r["settings"]["technique"] for r in rows})
-    for family in families:
+    markers = "os^vD<>P*Xh"
+    for n, family in enumerate(families):
         pts = [r for r in rows if r["settings"]["technique"] == family]
-        ax.scatter([total_ms(r) for r in pts], [r["mae"] for r in pts], label=family, s=18)
+        # Colour and marker both vary: more families than the palette has colours.
+        ax.scatter([total_ms(r) for r in pts], [r["mae"] for r in pts], label=family, s=20,
+                   marker=markers[n % len(markers)], color=plt.cm.tab20(n % 20))
     front = pareto(rows)
     ax.plot([total_ms(r) for r in front], [r["mae"] for r in front], "k--", linewidth=0.8, label="Pareto front")
     ax.set_xlabel(f"shadow + lighting pass, ms (median; {meta['timingMethod']})")
