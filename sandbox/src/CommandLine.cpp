@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include <cli/OptionValues.h>
+
 #include "ParameterTable.h"
 #include "SandboxError.h"
 
@@ -33,19 +35,13 @@ Explore shadow techniques side by side: a window with controls, or --headless to
 
 Techniques: )";
 
+/// The shared option parsers report through std::invalid_argument; the sandbox's errors are SandboxErrors.
 int parseInt(const std::string& option, const std::string& text, int low, int high) {
-    std::size_t used = 0;
-    int value = 0;
     try {
-        value = std::stoi(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
+        return cli::integerIn(option, text, low, high);
+    } catch (const std::invalid_argument& error) {
+        throw SandboxError(error.what());
     }
-    if (text.empty() || used != text.size() || value < low || value > high) {
-        throw SandboxError(option + ": '" + text + "' is not an integer in [" + std::to_string(low) + ", " +
-                           std::to_string(high) + "]");
-    }
-    return value;
 }
 
 std::string techniqueList() {
@@ -105,13 +101,11 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
         } else if (option == "--settings") {
             line.settingsFile = value();
         } else if (option == "--size") {
-            const std::string text = value();
-            const auto x = text.find('x');
-            if (x == std::string::npos) {
-                throw SandboxError("--size: '" + text + "' is not WIDTHxHEIGHT");
+            try {
+                line.size = cli::sizeIn(option, value(), 1, 16384);
+            } catch (const std::invalid_argument& error) {
+                throw SandboxError(error.what());
             }
-            line.size = {parseInt(option, text.substr(0, x), 1, 16384),
-                         parseInt(option, text.substr(x + 1), 1, 16384)};
         } else if (option == "--frames") {
             line.frames = parseInt(option, value(), 1, 1000000);
         } else if (option == "--out") {

@@ -1,6 +1,7 @@
 // gs-render: renders a scene headless (EGL surfaceless) to PNG and writes a short JSON report.
 #include <content/GltfLoader.h>
 
+#include <cli/OptionValues.h>
 #include <engine/Engine.h>
 #include <engine/Error.h>
 #include <engine/HeadlessContext.h>
@@ -52,21 +53,6 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
     std::exit(2);
 }
 
-int parseInt(const std::string& option, const std::string& text, int low, int high) {
-    std::size_t used = 0;
-    int value = 0;
-    try {
-        value = std::stoi(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || value < low || value > high) {
-        usageError(option + ": '" + text + "' is not an integer in [" + std::to_string(low) + ", " +
-                   std::to_string(high) + "]");
-    }
-    return value;
-}
-
 Options parse(int argc, char** argv) {
     Options options;
     options.shadows = shadows::ShadowSettings{};
@@ -86,19 +72,13 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--content") {
             options.contentFolder = value();
         } else if (arg == "--level") {
-            options.subdivisionLevel = parseInt("--level", value(), 0, 6);
+            options.subdivisionLevel = cli::integerIn("--level", value(), 0, 6);
         } else if (arg == "--out") {
             options.outFolder = value();
         } else if (arg == "--size") {
-            const std::string text = value();
-            const auto x = text.find('x');
-            if (x == std::string::npos) {
-                usageError("--size: '" + text + "' is not WIDTHxHEIGHT");
-            }
-            options.size = {parseInt("--size", text.substr(0, x), 1, 16384),
-                            parseInt("--size", text.substr(x + 1), 1, 16384)};
+            options.size = cli::sizeIn("--size", value(), 1, 16384);
         } else if (arg == "--frames") {
-            options.frames = parseInt("--frames", value(), 1, 1000);
+            options.frames = cli::integerIn("--frames", value(), 1, 1000);
         } else if (arg == "--module") {
             options.modules.push_back(value());
         } else if (arg == "--technique") {
@@ -112,7 +92,7 @@ Options parse(int argc, char** argv) {
                 usageError("--technique: unknown technique '" + name + "'");
             }
         } else if (arg == "--shadow-size" && options.shadows) {
-            options.shadows->resolution = parseInt("--shadow-size", value(), 64, 16384);
+            options.shadows->resolution = cli::integerIn("--shadow-size", value(), 64, 16384);
         } else if (arg == "--depth-format" && options.shadows) {
             const std::string name = value();
             const auto format = shadows::depthFormatFromString(name);
@@ -159,7 +139,12 @@ std::filesystem::path scenePath(const Options& options) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const Options options = parse(argc, argv);
+    Options options;
+    try {
+        options = parse(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        usageError(error.what());
+    }
     try {
         const std::filesystem::path path = scenePath(options);
         content::SceneLoadOptions loadOptions;

@@ -2,6 +2,8 @@
 // against ray-traced ground truth (Embree) and times its passes, and writes CSV, JSON and images.
 #include <shadowbench/ShadowBench.h>
 
+#include <cli/OptionValues.h>
+
 #include <engine/Error.h>
 #include <engine/HeadlessContext.h>
 #include <engine/Image.h>
@@ -47,36 +49,6 @@ std::vector<std::string> splitList(const std::string& text) {
     return items;
 }
 
-int parseInt(const std::string& option, const std::string& text, int low, int high) {
-    std::size_t used = 0;
-    int value = 0;
-    try {
-        value = std::stoi(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || value < low || value > high) {
-        usageError(option + ": '" + text + "' is not an integer in [" + std::to_string(low) + ", " +
-                   std::to_string(high) + "]");
-    }
-    return value;
-}
-
-float parseFloat(const std::string& option, const std::string& text, float low, float high) {
-    std::size_t used = 0;
-    float value = 0.0f;
-    try {
-        value = std::stof(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || !(value >= low && value <= high)) {
-        usageError(option + ": '" + text + "' is not a number in [" + std::to_string(low) + ", " +
-                   std::to_string(high) + "]");
-    }
-    return value;
-}
-
 struct Options {
     std::vector<std::string> scenes;
     std::vector<shadows::ShadowTechnique> techniques = shadows::allTechniques();
@@ -120,14 +92,14 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--taps") {
             options.taps.clear();
             for (const std::string& item : splitList(value())) {
-                options.taps.push_back(parseInt("--taps", item, 2, 8));
+                options.taps.push_back(cli::integerIn("--taps", item, 2, 8));
             }
         } else if (arg == "--radius") {
-            options.radius = parseFloat("--radius", value(), 0.25f, 16.0f);
+            options.radius = cli::numberIn("--radius", value(), 0.25f, 16.0f);
         } else if (arg == "--resolutions") {
             options.resolutions.clear();
             for (const std::string& item : splitList(value())) {
-                options.resolutions.push_back(parseInt("--resolutions", item, 64, 16384));
+                options.resolutions.push_back(cli::integerIn("--resolutions", item, 64, 16384));
             }
         } else if (arg == "--formats") {
             options.formats.clear();
@@ -152,25 +124,19 @@ Options parse(int argc, char** argv) {
                 usageError(error.what());
             }
         } else if (arg == "--size") {
-            const std::string text = value();
-            const auto x = text.find('x');
-            if (x == std::string::npos) {
-                usageError("--size: '" + text + "' is not WIDTHxHEIGHT");
-            }
-            options.bench.size = {parseInt("--size", text.substr(0, x), 16, 4096),
-                                  parseInt("--size", text.substr(x + 1), 16, 4096)};
+            options.bench.size = cli::sizeIn("--size", value(), 16, 4096);
         } else if (arg == "--frames") {
-            options.bench.frames = parseInt("--frames", value(), 1, 1000);
+            options.bench.frames = cli::integerIn("--frames", value(), 1, 1000);
         } else if (arg == "--band") {
-            options.bench.bandTexels = parseFloat("--band", value(), 0.0f, 64.0f);
+            options.bench.bandTexels = cli::numberIn("--band", value(), 0.0f, 64.0f);
         } else if (arg == "--soft") {
             const std::string text = value();
             const auto colon = text.find(':');
             if (colon == std::string::npos) {
                 usageError("--soft: '" + text + "' is not SAMPLES:RADIUS");
             }
-            options.bench.softSamplesPerAxis = parseInt("--soft", text.substr(0, colon), 1, 32);
-            options.bench.softRadius = parseFloat("--soft", text.substr(colon + 1), 0.0f, 100.0f);
+            options.bench.softSamplesPerAxis = cli::integerIn("--soft", text.substr(0, colon), 1, 32);
+            options.bench.softRadius = cli::numberIn("--soft", text.substr(colon + 1), 0.0f, 100.0f);
         } else if (arg == "--out") {
             options.bench.imageFolder = value();
         } else if (arg == "--content") {
@@ -241,7 +207,12 @@ engine::Image sideBySide(const std::vector<engine::Image>& images) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const Options options = parse(argc, argv);
+    Options options;
+    try {
+        options = parse(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        usageError(error.what());
+    }
     try {
         engine::HeadlessContext context;
         const shadowbench::ShadowBench bench(context, options.bench);

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+/// @brief Values of command-line options, shared by the project's CLIs. Each throws std::invalid_argument
+/// whose message names the option and the text, e.g. "--size: '0' is not an integer in [1, 16384]".
+namespace cli {
+
+inline int integerIn(std::string_view option, const std::string& text, int low, int high) {
+    std::size_t used = 0;
+    int value = 0;
+    try {
+        value = std::stoi(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (text.empty() || used != text.size() || value < low || value > high) {
+        throw std::invalid_argument(std::string(option) + ": '" + text + "' is not an integer in [" +
+                                    std::to_string(low) + ", " + std::to_string(high) + "]");
+    }
+    return value;
+}
+
+inline float numberIn(std::string_view option, const std::string& text, float low, float high) {
+    std::size_t used = 0;
+    float value = 0.0f;
+    try {
+        value = std::stof(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (text.empty() || used != text.size() || !(value >= low && value <= high)) {
+        throw std::invalid_argument(std::string(option) + ": '" + text + "' is not a number in [" +
+                                    std::to_string(low) + ", " + std::to_string(high) + "]");
+    }
+    return value;
+}
+
+/// @brief "WIDTHxHEIGHT", each side in [low, high].
+inline glm::ivec2 sizeIn(std::string_view option, const std::string& text, int low, int high) {
+    const auto x = text.find('x');
+    if (x == std::string::npos) {
+        throw std::invalid_argument(std::string(option) + ": '" + text + "' is not WIDTHxHEIGHT");
+    }
+    return {integerIn(option, text.substr(0, x), low, high),
+            integerIn(option, text.substr(x + 1), low, high)};
+}
+
+} // namespace cli
