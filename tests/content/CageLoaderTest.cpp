@@ -5,11 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <limits>
+#include <memory>
 #include <string>
+#include <thread>
 
 namespace content {
 namespace {
@@ -203,6 +210,144 @@ TEST(CageValidateTest, ShapesAreValid) {
     EXPECT_NO_THROW(CageShapes::box({3, 2, 1}, {1.0f, 2.0f, 3.0f}).validate());
     EXPECT_NO_THROW(CageShapes::quadSphere(4, 2.0f).validate());
     EXPECT_NO_THROW(CageShapes::torus(12, 5, 2.0f, 0.5f).validate());
+}
+
+// Robustness: inputs in memory, limits and inputs written against the loader (see docs/ROBUSTNESS.md).
+
+TEST(CageLoaderMemoryTest, ParsesBothFormatsAndNamesTheSource) {
+    const Cage off = CageLoader::loadFromMemory(
+        "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+        CageLoader::Format::Off, "mem.off");
+    EXPECT_EQ(off.source, "mem.off");
+    EXPECT_EQ(off.faces.size(), 4u);
+    expectContentError(
+        [] { (void)CageLoader::loadFromMemory("v 0 0 0\nv 1 x 0\n", CageLoader::Format::Obj, "mem.obj"); },
+        "mem.obj:2: 'x' is not a number");
+    expectContentError(
+        [] { (void)CageLoader::loadFromMemory("v 0 0 0\n", CageLoader::Format::Off, "mem.off"); },
+        "mem.off:1: missing OFF header");
+}
+
+TEST(CageLoaderMemoryTest, GarbageIsAContentError) {
+    std::string garbage;
+    for (int i = 0; i < 4096; ++i) {
+        garbage += static_cast<char>((i * 7919) % 256);
+    }
+    for (const auto format : {CageLoader::Format::Obj, CageLoader::Format::Off}) {
+        try {
+            (void)CageLoader::loadFromMemory(garbage, format, "garbage");
+            ADD_FAILURE() << "garbage loaded";
+        } catch (const ContentError& error) {
+            EXPECT_EQ(std::string(error.what()).rfind("garbage", 0), 0u) << error.what();
+        }
+    }
+}
+
+TEST(CageLoaderMemoryTest, NumbersMustEndAtTheirTokensEnd) {
+    // strtof stopped at the '\0' and read "1\0junk" as 1.
+    const std::string text("v 0 0 0\nv 1\0junk 0 0\nv 0 1 0\nf 1 2 3\n", 33);
+    expectContentError([&] { (void)CageLoader::loadFromMemory(text, CageLoader::Format::Obj, "mem.obj"); },
+                       "mem.obj:2: '1\\x00junk' is not a number");
+}
+
+TEST(CageLoaderMemoryTest, HugeIndicesAndCountsAreRejected) {
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    expectContentError(
+        [&] {
+            (void)CageLoader::loadFromMemory(triangle + "f 1 2 4294967296\n", CageLoader::Format::Obj, "m");
+        },
+        "m:4: index 4294967296 is out of range");
+    expectContentError(
+        [&] {
+            (void)CageLoader::loadFromMemory(triangle + "f 1 2 4294967295\n", CageLoader::Format::Obj, "m");
+        },
+        "m: face 1 index 4294967295 is out of range (3 vertices)");
+    expectContentError(
+        [&] {
+            (void)CageLoader::loadFromMemory(triangle + "f 1 2 99999999999999999999\n",
+                                             CageLoader::Format::Obj, "m");
+        },
+        "m:4: '99999999999999999999' is not an integer");
+    // Counts are never used to reserve memory: the file runs out first.
+    expectContentError(
+        [] {
+            (void)CageLoader::loadFromMemory("OFF\n1000000000000 1\n0 0 0\n", CageLoader::Format::Off, "m");
+        },
+        "m:3: file ends after 1 of 1000000000000 vertices");
+    expectContentError(
+        [&] {
+            (void)CageLoader::loadFromMemory(triangle + "f 1 2 3\n# crease 1 2 nan\n",
+                                             CageLoader::Format::Obj, "m");
+        },
+        "m: crease (1,2) has invalid sharpness (nan)");
+}
+
+TEST(CageLoaderMemoryTest, FacesBeyondOpenSubdivsValenceLimitAreNamed) {
+    // A polygon of n vertices on the unit circle, as OBJ.
+    auto polygon = [](std::size_t n, const std::string& extraIndex) {
+        std::string text;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double angle = 6.283185307179586 * static_cast<double>(i) / static_cast<double>(n);
+            text += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+        }
+        text += "f";
+        for (std::size_t i = 1; i <= n; ++i) {
+            text += " " + std::to_string(i);
+        }
+        return text + extraIndex + "\n";
+    };
+    // OpenSubdiv refused it with a console message only ("face with 70000 vertices > 65535 max").
+    expectContentError(
+        [&] { (void)CageLoader::loadFromMemory(polygon(70000, ""), CageLoader::Format::Obj, "m"); },
+        "m: face 1 has 70000 vertices (at most 65535 supported)");
+    // Repeats were found by comparing every pair of corners: seconds for this face, minutes for 10^5 corners.
+    expectContentError(
+        [&] { (void)CageLoader::loadFromMemory(polygon(65534, " 7"), CageLoader::Format::Obj, "m"); },
+        "m: face 1 is degenerate (vertex 7 repeated)");
+}
+
+TEST(CageLoaderMemoryTest, VerticesBeyondOpenSubdivsValenceLimitAreNamed) {
+    // A disc fan of 65536 triangles around vertex 1.
+    const int n = 65536;
+    std::string text = "v 0 0 0\n";
+    for (int i = 0; i < n; ++i) {
+        const double angle = 6.283185307179586 * i / n;
+        text += "v " + std::to_string(std::cos(angle)) + " " + std::to_string(std::sin(angle)) + " 0\n";
+    }
+    for (int i = 0; i < n; ++i) {
+        text += "f 1 " + std::to_string(i + 2) + " " + std::to_string((i + 1) % n + 2) + "\n";
+    }
+    expectContentError([&] { (void)CageLoader::loadFromMemory(text, CageLoader::Format::Obj, "m"); },
+                       "m: vertex 1 is used by 65536 faces (at most 65535 supported)");
+}
+
+TEST(CageLoaderTest, MtllibIsNeverFollowed) {
+    // OpenMesh's OBJ reader, which used to read the file after the scan, opened whatever `mtllib` named
+    // relative to the file ("../../etc/passwd"; a FIFO or /dev/stdin blocked the load forever). The loader
+    // now hands OpenMesh only the parsed cage. A FIFO without a writer makes any attempt to open it hang, so
+    // the load runs on a thread the test gives up on.
+    const auto folder =
+        std::filesystem::path(::testing::TempDir()) / ("gs_mtllib_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    const auto fifo = folder / "material.mtl";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto path = folder / "tri.obj";
+    std::ofstream(path) << "mtllib material.mtl\nusemtl x\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+    auto loaded = std::make_shared<std::promise<std::size_t>>();
+    std::thread([loaded, path] {
+        try {
+            loaded->set_value(CageLoader::load(path).faces.size());
+        } catch (...) {
+            loaded->set_exception(std::current_exception());
+        }
+    }).detach();
+    auto result = loaded->get_future();
+    ASSERT_EQ(result.wait_for(std::chrono::seconds(20)), std::future_status::ready)
+        << "the load blocked on mtllib";
+    EXPECT_EQ(result.get(), 1u);
+    std::filesystem::remove_all(folder);
 }
 
 } // namespace

@@ -448,3 +448,354 @@ TEST_F(GltfTest, SubdivisionFlagOnOwnTrianglesUsesTheWeldedMesh) {
     EXPECT_EQ(surface.triangleCount(), 128u);
     EXPECT_EQ(surface.positions.size(), 66u);
 }
+
+// Robustness: inputs found by fuzzing (tests/fuzz, docs/ROBUSTNESS.md) or written against the loader's
+// limits. Each must fail with a ContentError naming the source and the field, quickly and without a huge
+// allocation.
+
+namespace {
+
+std::span<const std::uint8_t> bytesOf(const std::string& text) {
+    return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
+}
+
+std::string memoryLoadError(const std::string& text, const std::filesystem::path& baseFolder = {},
+                            const SceneLoadOptions& options = {}) {
+    try {
+        (void)GltfLoader::loadFromMemory(bytesOf(text), baseFolder, "mem.gltf", options);
+    } catch (const ContentError& error) {
+        return error.what();
+    }
+    return "(loaded)";
+}
+
+void appendU32(std::string& out, std::uint32_t value) {
+    for (int shift = 0; shift < 32; shift += 8) {
+        out += static_cast<char>((value >> shift) & 0xffu);
+    }
+}
+
+/// A GLB container around `json` and `bin`; `binLengthField` overrides the BIN chunk's length field.
+std::string glb(std::string json, const std::string& bin, std::optional<std::uint32_t> binLengthField = {},
+                std::uint32_t version = 2) {
+    while (json.size() % 4 != 0) {
+        json += ' ';
+    }
+    std::string out = "glTF";
+    appendU32(out, version);
+    appendU32(out, static_cast<std::uint32_t>(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size())));
+    appendU32(out, static_cast<std::uint32_t>(json.size()));
+    out += "JSON" + json;
+    if (!bin.empty()) {
+        appendU32(out, binLengthField.value_or(static_cast<std::uint32_t>(bin.size())));
+        out += std::string("BIN\0", 4) + bin;
+    }
+    return out;
+}
+
+/// glTF JSON with `nodes` as given and one triangle mesh (the TriangleGltf buffer) that nodes may use.
+std::string withNodes(const std::string& nodes,
+                      const std::string& scenes = R"("scene":0,"scenes":[{"nodes":[0]}],)") {
+    std::string text = TriangleGltf{}.json();
+    const auto begin = text.find(R"("scene":0)");
+    const auto end = text.find(R"("meshes")");
+    return text.substr(0, begin) + scenes + R"("nodes":)" + nodes + "," + text.substr(end);
+}
+
+} // namespace
+
+TEST_F(GltfTest, LoadFromMemoryReadsTextAndBinaryLikeFiles) {
+    const std::string text = TriangleGltf{}.json();
+    const LoadedScene fromText = GltfLoader::loadFromMemory(bytesOf(text), {}, "mem.gltf");
+    ASSERT_EQ(fromText.scene.size(), 1u);
+    EXPECT_EQ(fromText.scene.entity(0).mesh->mesh->indices, (std::vector<std::uint32_t>{0, 1, 2}));
+
+    engine::Scene scene;
+    const auto id = scene.create("cube");
+    scene.entity(id).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube())};
+    const auto path = folder_ / "cube.glb";
+    GltfWriter::save(scene, path);
+    std::ifstream file(path, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    const LoadedScene fromGlb = GltfLoader::loadFromMemory(bytesOf(bytes), {}, "mem.glb");
+    EXPECT_EQ(fromGlb.scene.entity(0).mesh->mesh->positions, engine::primitives::cube().positions);
+}
+
+TEST_F(GltfTest, AccessorCountOf2To32MinusOneIsRejectedBeforeAllocating) {
+    // Found by the fuzzer: the loader sized its vector from the count before checking the bounds, asking for
+    // 16 GiB (and spending tens of seconds in page faults where the allocation succeeded).
+    TriangleGltf gltf;
+    gltf.indexCount = "4294967295";
+    const std::string message = memoryLoadError(gltf.json());
+    EXPECT_NE(message.find("mem.gltf: accessors[1] (meshes[0].primitives[0].indices): 4294967295 elements"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("(accessor out of bounds)"), std::string::npos) << message;
+}
+
+TEST_F(GltfTest, BufferViewOffsetThatWrapsAroundIsRejected) {
+    // byteOffset + byteLength wrapped around 2^64 to a small end, so the old check passed and the copy read 8
+    // bytes before the buffer (UBSan: pointer overflow).
+    std::string text = TriangleGltf{}.json();
+    const std::string view = R"("byteOffset":0,"byteLength":36)";
+    text.replace(text.find(view), view.size(), R"("byteOffset":18446744073709551608,"byteLength":40)");
+    const std::string message = memoryLoadError(text);
+    EXPECT_NE(message.find("mem.gltf: accessors[0] (meshes[0].primitives[0].POSITION): bufferView 0 "
+                           "(byteOffset 18446744073709551608, byteLength 40) reaches beyond its buffer"),
+              std::string::npos)
+        << message;
+}
+
+TEST_F(GltfTest, AccessorOffsetsAndStridesOutsideTheViewAreRejected) {
+    std::string text = TriangleGltf{}.json();
+    const std::string accessor = R"({"bufferView":0,"componentType":5126,)";
+    text.replace(text.find(accessor), accessor.size(),
+                 R"({"bufferView":0,"byteOffset":18446744073709551615,"componentType":5126,)");
+    EXPECT_NE(
+        memoryLoadError(text).find("3 elements from byteOffset 18446744073709551615 overrun bufferView 0"),
+        std::string::npos)
+        << memoryLoadError(text);
+
+    // tinygltf itself refuses strides over 252 (glTF's limit); an explicit 0 means tightly packed.
+    for (const char* stride : {"256", "0"}) {
+        text = TriangleGltf{}.json();
+        const std::string view = R"("byteLength":36)";
+        text.replace(text.find(view), view.size(), std::string(R"("byteLength":36,"byteStride":)") + stride);
+        const std::string message = memoryLoadError(text);
+        if (std::string(stride) == "0") {
+            EXPECT_EQ(message, "(loaded)");
+        } else {
+            EXPECT_NE(message.find("mem.gltf: not a valid glTF 2.0 file"), std::string::npos) << message;
+            EXPECT_NE(message.find("byteStride"), std::string::npos) << message;
+        }
+    }
+}
+
+TEST_F(GltfTest, GlbWhoseBinChunkOverrunsTheDataIsRejected) {
+    // tinygltf 2.7.0 checks the BIN chunk's length without its 8-byte header, so it copied the 12 bytes the
+    // chunk claims from the 8 there are (ASan: heap-buffer-overflow).
+    const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":12}]})";
+    const std::string message = memoryLoadError(glb(json, std::string(8, '\0'), 12));
+    EXPECT_NE(message.find("mem.gltf: not a valid glTF 2.0 file: GLB BIN chunk of 12 bytes overruns"),
+              std::string::npos)
+        << message;
+}
+
+TEST_F(GltfTest, GlbHeaderProblemsAreNamed) {
+    const std::string json = R"({"asset":{"version":"2.0"}})";
+    EXPECT_NE(memoryLoadError(glb(json, "", {}, 1)).find("GLB header has version 1 (expected 2)"),
+              std::string::npos);
+    std::string longer = glb(json, "");
+    longer[8] = static_cast<char>(longer[8] + 4); // the header claims 4 bytes more than there are
+    EXPECT_NE(memoryLoadError(longer).find("GLB header says"), std::string::npos) << memoryLoadError(longer);
+    EXPECT_NE(memoryLoadError("glTF").find("GLB is 4 bytes, shorter than its headers"), std::string::npos);
+}
+
+TEST_F(GltfTest, GlbBufferOfZeroBytesIsAContentError) {
+    // tinygltf throws std::out_of_range for it (vector::at(0) on an empty vector) instead of reporting it.
+    const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":0}]})";
+    const std::string message = memoryLoadError(glb(json, std::string(4, '\0')));
+    EXPECT_NE(message.find("mem.gltf: not a valid glTF 2.0 file"), std::string::npos) << message;
+}
+
+TEST_F(GltfTest, DeeplyNestedJsonIsRejectedBeforeParsing) {
+    // A million nested arrays in `extras` overflowed the stack in tinygltf's recursive value conversion.
+    const std::size_t depth = 1'000'000;
+    const std::string text = R"({"asset":{"version":"2.0"},"nodes":[{"extras":)" + std::string(depth, '[') +
+                             std::string(depth, ']') + "}]}";
+    const std::string message = memoryLoadError(text);
+    EXPECT_NE(
+        message.find("mem.gltf: not a valid glTF 2.0 file: JSON nested more than 128 levels deep at byte"),
+        std::string::npos)
+        << message;
+    // Brackets inside strings, escaped quotes included, are not nesting.
+    TriangleGltf gltf;
+    gltf.extraNodeFields = R"(,"extras":{"note":"\"[[[[)" + std::string(200, '[') + R"("})";
+    EXPECT_EQ(memoryLoadError(gltf.json()), "(loaded)");
+}
+
+TEST_F(GltfTest, NodesReachedTwiceAreRejected) {
+    // Twenty nodes, each listing the next one twice as a child: 2^20 paths, which the loader used to
+    // instantiate one by one.
+    std::string nodes = "[";
+    for (int i = 0; i < 20; ++i) {
+        nodes += i == 0 ? "" : ",";
+        nodes += R"({"children":[)" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]}";
+    }
+    nodes += R"(,{"mesh":0}])";
+    EXPECT_NE(
+        memoryLoadError(withNodes(nodes)).find("mem.gltf: nodes[20] is reached twice in the node hierarchy"),
+        std::string::npos)
+        << memoryLoadError(withNodes(nodes));
+    // A cycle, and a scene listing its root twice.
+    EXPECT_NE(memoryLoadError(withNodes(R"([{"children":[1]},{"children":[0]}])"))
+                  .find("nodes[0] is reached twice"),
+              std::string::npos);
+    EXPECT_NE(memoryLoadError(withNodes(R"([{"mesh":0}])", R"("scene":0,"scenes":[{"nodes":[0,0]}],)"))
+                  .find("nodes[0] is reached twice"),
+              std::string::npos);
+}
+
+TEST_F(GltfTest, ChainsDeeperThan256NodesAreRejected) {
+    std::string nodes = "[";
+    for (int i = 0; i < 300; ++i) {
+        nodes += (i == 0 ? "" : ",") + std::string(R"({"children":[)") + std::to_string(i + 1) + "]}";
+    }
+    nodes += R"(,{"mesh":0}])";
+    EXPECT_NE(memoryLoadError(withNodes(nodes)).find("mem.gltf: node 257 is nested more than 256 deep"),
+              std::string::npos)
+        << memoryLoadError(withNodes(nodes));
+}
+
+namespace {
+
+std::string emptyNodes(int count) {
+    std::string nodes = "[";
+    for (int i = 0; i < count; ++i) {
+        nodes += i == 0 ? "{}" : ",{}";
+    }
+    return nodes + "]";
+}
+
+} // namespace
+
+TEST_F(GltfTest, AMillionNodesOfAnEmptySceneLoadAsNoEntities) {
+    // Costs time and memory in proportion to the file (tinygltf keeps ~0.5 KB per node), nothing more.
+    const std::string text =
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{}],"nodes":)" + emptyNodes(1'000'000) + "}";
+    EXPECT_EQ(GltfLoader::loadFromMemory(bytesOf(text), {}, "mem.gltf").scene.size(), 0u);
+}
+
+TEST_F(GltfTest, WithoutScenesEveryRootNodeIsAnEntity) {
+    const std::string text = R"({"asset":{"version":"2.0"},"nodes":)" + emptyNodes(100'000) + "}";
+    EXPECT_EQ(GltfLoader::loadFromMemory(bytesOf(text), {}, "mem.gltf").scene.size(), 100'000u);
+}
+
+TEST_F(GltfTest, MeshDataBeyondTheLimitIsRejectedBeforeAllocating) {
+    // One 36-byte triangle instanced by 1000 nodes: each instance is charged, so a small file cannot demand
+    // gigabytes by repeating a reference.
+    std::string nodes = "[";
+    std::string roots;
+    for (int i = 0; i < 1000; ++i) {
+        nodes += (i == 0 ? "" : ",") + std::string(R"({"mesh":0})");
+        roots += (i == 0 ? "" : ",") + std::to_string(i);
+    }
+    nodes += "]";
+    const std::string text = withNodes(nodes, R"("scene":0,"scenes":[{"nodes":[)" + roots + "]}],");
+    EXPECT_EQ(GltfLoader::loadFromMemory(bytesOf(text), {}, "mem.gltf").scene.size(), 1000u);
+    SceneLoadOptions options;
+    options.meshByteLimit = 10'000; // 48 bytes per instance: room for 208 of them
+    const std::string message = memoryLoadError(text, {}, options);
+    EXPECT_NE(
+        message.find("mem.gltf: accessors[0] (meshes[0].primitives[0].POSITION) needs 36 bytes of mesh data, "
+                     "more than is left of the 10000 bytes the scene may use"),
+        std::string::npos)
+        << message;
+
+    // Subdivision is charged by its estimated output before OpenSubdiv runs: the triangle's welded cage at
+    // level 6 is 4^6 triangles.
+    TriangleGltf subdivided;
+    subdivided.extraNodeFields = R"(,"extras":{"subdivision":{"scheme":"loop","level":6}})";
+    options.meshByteLimit = 100'000;
+    EXPECT_NE(memoryLoadError(subdivided.json(), {}, options)
+                  .find("mem.gltf: nodes[0].extras.subdivision needs 196608 bytes of mesh data"),
+              std::string::npos)
+        << memoryLoadError(subdivided.json(), {}, options);
+}
+
+TEST_F(GltfTest, ExternalFilesMustLieInsideTheBaseFolder) {
+    const auto inside = folder_ / "scene";
+    std::filesystem::create_directories(inside);
+    std::vector<unsigned char> bytes =
+        withIndices(interleavedQuad(), std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
+    std::ofstream(folder_ / "quad.bin", std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    std::string text = quadGltf(4, 5123, 6, 12, "");
+    text.replace(text.find(R"("uri":"quad.bin")"), 16, R"("uri":"../quad.bin")");
+    std::string message = memoryLoadError(text, inside);
+    EXPECT_NE(message.find("mem.gltf: external file '"), std::string::npos) << message;
+    EXPECT_NE(message.find("was not read: it lies outside the folder " +
+                           std::filesystem::weakly_canonical(inside).string()),
+              std::string::npos)
+        << message;
+
+    // Percent-encoded and absolute URIs are resolved the same way.
+    text.replace(text.find(R"("uri":"../quad.bin")"), 19, R"("uri":"%2e%2e/quad.bin")");
+    EXPECT_NE(memoryLoadError(text, inside).find("lies outside the folder"), std::string::npos);
+
+    // Without a base folder nothing external is read, not even from the working directory.
+    text = quadGltf(4, 5123, 6, 12, "");
+    message = memoryLoadError(text);
+    EXPECT_NE(message.find("external file 'quad.bin' was not read: no external file may be read"),
+              std::string::npos)
+        << message;
+    // ...and the same file next to the scene still loads through load().
+    std::filesystem::copy_file(folder_ / "quad.bin", inside / "quad.bin");
+    std::ofstream(inside / "quad.gltf") << text;
+    EXPECT_EQ(GltfLoader::load(inside / "quad.gltf").scene.size(), 1u);
+
+    // Images are optional (and unused): one outside the folder is left out with a warning.
+    TriangleGltf textured;
+    textured.extraTopLevel = R"(,"images":[{"uri":"../texture.png"}])";
+    const LoadedScene loaded = GltfLoader::loadFromMemory(bytesOf(textured.json()), inside, "mem.gltf");
+    ASSERT_FALSE(loaded.warnings.empty());
+    EXPECT_NE(loaded.warnings.front().find("mem.gltf: external file '"), std::string::npos)
+        << loaded.warnings.front();
+    EXPECT_NE(loaded.warnings.front().find("texture.png' was not read: it lies outside the folder"),
+              std::string::npos)
+        << loaded.warnings.front();
+
+    TriangleGltf cage;
+    cage.extraNodeFields = R"(,"extras":{"subdivision":{"cage":"knob.obj"}})";
+    EXPECT_NE(memoryLoadError(cage.json())
+                  .find("mem.gltf: nodes[0].extras.subdivision.cage 'knob.obj' cannot be read: the scene was "
+                        "loaded from memory without a base folder"),
+              std::string::npos)
+        << memoryLoadError(cage.json());
+}
+
+struct BadValueCase {
+    const char* name;
+    const char* nodeFields;
+    const char* topLevel;
+    const char* expected;
+};
+
+class GltfBadValueTest : public GltfTest, public testing::WithParamInterface<BadValueCase> {};
+
+TEST_P(GltfBadValueTest, FailsWithMessageNamingTheField) {
+    TriangleGltf gltf;
+    gltf.extraNodeFields = GetParam().nodeFields;
+    gltf.extraTopLevel = GetParam().topLevel;
+    const std::string message = memoryLoadError(gltf.json());
+    EXPECT_EQ(message.rfind("mem.gltf: ", 0), 0u) << message;
+    EXPECT_NE(message.find(GetParam().expected), std::string::npos) << message;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, GltfBadValueTest,
+    testing::Values(
+        // 1e300 is a finite double but an infinite float.
+        BadValueCase{"hugeTranslation", R"(,"translation":[1e300,0,0])", "",
+                     "nodes[0].translation must hold 3 finite numbers"},
+        BadValueCase{"zeroQuaternion", R"(,"rotation":[0,0,0,0])", "",
+                     "nodes[0].rotation must be a non-zero quaternion"},
+        BadValueCase{"hugeMatrix", R"(,"matrix":[1e300,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1])", "",
+                     "nodes[0].matrix must hold 16 finite numbers"},
+        // Each entry fits a float, but the first column's length (the scale) does not.
+        BadValueCase{"matrixScaleOverflows", R"(,"matrix":[3e38,3e38,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1])", "",
+                     "nodes[0].matrix has no finite translation, rotation and scale"},
+        BadValueCase{
+            "flatOrthographicCamera", R"(,"camera":0)",
+            R"(,"cameras":[{"type":"orthographic","orthographic":{"xmag":1,"ymag":0,"znear":0,"zfar":9}}])",
+            "needs a finite ymag > 0"},
+        BadValueCase{"castsShadowsNotBoolean", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional",)"
+                     R"("extras":{"castsShadows":"yes"}}]}})",
+                     "light 0 extras.castsShadows must be true or false"},
+        BadValueCase{
+            "negativeLightColor", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+            R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional","color":[1,-1,1]}]}})",
+            "light 0 needs a color of finite, non-negative numbers"}),
+    [](const auto& test) { return std::string(test.param.name); });

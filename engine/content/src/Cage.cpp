@@ -18,6 +18,10 @@ namespace {
 // with e the face's longest edge. Catches collinear and collapsed faces without flagging thin but real ones.
 constexpr double kDegenerateAreaRatio = 1e-7;
 
+// OpenSubdiv's limit on the vertices of a face and the faces around a vertex (Vtr::VALENCE_LIMIT); its
+// refiner factory fails on larger ones with only a console message.
+constexpr std::size_t kMaxValence = (1u << 16) - 1;
+
 std::string formatNumber(float value) {
     if (std::isnan(value)) {
         return "nan";
@@ -107,11 +111,16 @@ private:
 
     void checkFaces() const {
         const std::size_t vertexCount = cage_.positions.size();
+        std::vector<std::uint32_t> sorted;
         for (std::size_t f = 0; f < cage_.faces.size(); ++f) {
             const auto& fv = cage_.faces[f];
             if (fv.size() < 3) {
                 fail("face " + face(f) + " has " + std::to_string(fv.size()) +
                      " vertices (at least 3 needed)");
+            }
+            if (fv.size() > kMaxValence) {
+                fail("face " + face(f) + " has " + std::to_string(fv.size()) + " vertices (at most " +
+                     std::to_string(kMaxValence) + " supported)");
             }
             for (const std::uint32_t v : fv) {
                 if (v >= vertexCount) {
@@ -119,10 +128,12 @@ private:
                          std::to_string(vertexCount) + " vertices)");
                 }
             }
-            for (std::size_t i = 0; i < fv.size(); ++i) {
-                if (std::find(fv.begin() + static_cast<std::ptrdiff_t>(i) + 1, fv.end(), fv[i]) != fv.end()) {
-                    fail("face " + face(f) + " is degenerate (vertex " + vertex(fv[i]) + " repeated)");
-                }
+            // Sorting finds repeats in O(n log n); comparing every pair stalls on faces of 10^5 vertices.
+            sorted.assign(fv.begin(), fv.end());
+            std::sort(sorted.begin(), sorted.end());
+            if (const auto repeat = std::adjacent_find(sorted.begin(), sorted.end());
+                repeat != sorted.end()) {
+                fail("face " + face(f) + " is degenerate (vertex " + vertex(*repeat) + " repeated)");
             }
             if (hasZeroArea(fv)) {
                 fail("face " + face(f) + " is degenerate (zero area)");
@@ -209,6 +220,11 @@ private:
             auto& roots = fanRoots[v];
             if (roots.empty()) {
                 fail("vertex " + vertex(static_cast<std::uint32_t>(v)) + " is not used by any face");
+            }
+            if (roots.size() > kMaxValence) {
+                fail("vertex " + vertex(static_cast<std::uint32_t>(v)) + " is used by " +
+                     std::to_string(roots.size()) + " faces (at most " + std::to_string(kMaxValence) +
+                     " supported)");
             }
             std::sort(roots.begin(), roots.end());
             const auto fanCount = std::unique(roots.begin(), roots.end()) - roots.begin();

@@ -2,7 +2,6 @@
 
 #include "content/ContentError.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh> // must precede the mesh type so the readers get registered
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -30,20 +30,35 @@ std::vector<std::string> tokenize(const std::string& line) {
     return tokens;
 }
 
-/// Reads a file line by line, reporting syntax errors as "<file>:<line>: <detail>".
-class LineReader {
-public:
-    LineReader(const std::filesystem::path& path, std::string source)
-        : in_(path), source_(std::move(source)) {
-        if (!in_) {
-            throw ContentError(source_, "cannot be opened");
+/// A token from the file as error messages show it: control and non-ASCII bytes as \xNN (a '\0' would end the
+/// message early), and cut short, since a token may be as long as the file.
+std::string shown(const std::string& token) {
+    constexpr std::size_t kLongest = 40;
+    std::string out;
+    for (const char c : token.substr(0, kLongest)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte >= 0x7f) {
+            constexpr const char* kHex = "0123456789abcdef";
+            out += std::string("\\x") + kHex[byte >> 4] + kHex[byte & 15];
+        } else {
+            out += c;
         }
     }
+    return token.size() > kLongest ? out + "..." : out;
+}
+
+/// Reads text line by line, reporting syntax errors as "<source>:<line>: <detail>".
+class LineReader {
+public:
+    LineReader(std::string_view text, std::string source) : text_(text), source_(std::move(source)) {}
 
     bool next(std::string& line) {
-        if (!std::getline(in_, line)) {
+        if (position_ >= text_.size()) {
             return false;
         }
+        const std::size_t end = std::min(text_.find('\n', position_), text_.size());
+        line.assign(text_.substr(position_, end - position_));
+        position_ = end + 1;
         ++lineNumber_;
         if (!line.empty() && line.back() == '\r') {
             line.pop_back(); // files written on Windows
@@ -57,11 +72,12 @@ public:
 
     // strtof rather than stream extraction: it accepts "nan" and "inf", which must reach validation so the
     // error names the vertex instead of complaining about syntax.
+    // Both parsers must consume the whole token: stopping at a '\0' inside it would accept "1\0junk" as 1.
     float parseFloat(const std::string& token) const {
         char* end = nullptr;
         const float value = std::strtof(token.c_str(), &end);
-        if (end == token.c_str() || *end != '\0') {
-            fail("'" + token + "' is not a number");
+        if (end == token.c_str() || end != token.c_str() + token.size()) {
+            fail("'" + shown(token) + "' is not a number");
         }
         return value;
     }
@@ -70,8 +86,8 @@ public:
         char* end = nullptr;
         errno = 0;
         const long long value = std::strtoll(token.c_str(), &end, 10);
-        if (end == token.c_str() || *end != '\0' || errno == ERANGE) {
-            fail("'" + token + "' is not an integer");
+        if (end == token.c_str() || end != token.c_str() + token.size() || errno == ERANGE) {
+            fail("'" + shown(token) + "' is not an integer");
         }
         return value;
     }
@@ -80,7 +96,7 @@ public:
     // left for Cage::validate() to report against the face that uses them.
     std::uint32_t toZeroBased(long long oneBased, const std::string& token) const {
         if (oneBased < 1 || oneBased > std::numeric_limits<std::uint32_t>::max()) {
-            fail("index " + token + " is out of range");
+            fail("index " + shown(token) + " is out of range");
         }
         return static_cast<std::uint32_t>(oneBased - 1);
     }
@@ -90,7 +106,8 @@ public:
     }
 
 private:
-    std::ifstream in_;
+    std::string_view text_;
+    std::size_t position_ = 0;
     std::string source_;
     int lineNumber_ = 0;
 };
@@ -116,8 +133,8 @@ void parseCreaseComment(const LineReader& reader, const std::string& line, Cage&
 }
 
 /// Raw OBJ scan: vertices, faces and crease comments; other statements (vt, vn, g, usemtl...) are ignored.
-void scanObj(const std::filesystem::path& path, Cage& cage) {
-    LineReader reader(path, cage.source);
+void scanObj(std::string_view text, Cage& cage) {
+    LineReader reader(text, cage.source);
     for (std::string line; reader.next(line);) {
         const auto tokens = tokenize(line);
         if (tokens.empty()) {
@@ -147,10 +164,11 @@ void scanObj(const std::filesystem::path& path, Cage& cage) {
 }
 
 /// Raw ASCII OFF scan ([ST][C][N]OFF header; extra per-vertex and per-face values are ignored). Accepts only
-/// the layout OpenMesh's OFF reader understands: the header alone on the first line, the counts on the next,
-/// and no comments. OpenMesh reports success on other layouts but reads nothing.
-void scanOff(const std::filesystem::path& path, Cage& cage) {
-    LineReader reader(path, cage.source);
+/// the layout OpenMesh's OFF reader understands, so accepted files stay readable by OpenMesh-based tools: the
+/// header alone on the first line, the counts on the next, and no comments. OpenMesh reports success on other
+/// layouts but reads nothing.
+void scanOff(std::string_view text, Cage& cage) {
+    LineReader reader(text, cage.source);
     auto nextTokens = [&reader](std::vector<std::string>& tokens) {
         for (std::string line; reader.next(line);) {
             if (line.find('#') != std::string::npos) {
@@ -213,29 +231,25 @@ void scanOff(const std::filesystem::path& path, Cage& cage) {
     }
 }
 
-/// Replaces the scanned geometry with OpenMesh's reading of the file, after checking it kept every element.
-void readThroughOpenMesh(const std::filesystem::path& path, Cage& cage) {
+/// Builds OpenMesh's half-edge mesh from the validated cage: OpenMesh refuses faces it cannot link (complex
+/// vertices or edges), a second opinion on the topology from the library the cage format was designed
+/// against.
+void checkWithOpenMesh(const Cage& cage) {
     PolyMesh mesh;
-    if (!OpenMesh::IO::read_mesh(mesh, path.string())) {
-        throw ContentError(cage.source, "OpenMesh could not read the file");
+    std::vector<PolyMesh::VertexHandle> vertices;
+    vertices.reserve(cage.positions.size());
+    for (const glm::vec3& p : cage.positions) {
+        vertices.push_back(mesh.add_vertex(PolyMesh::Point(p.x, p.y, p.z)));
     }
-    // The scanned cage already passed validation, so any shortfall means OpenMesh refused elements itself.
-    if (mesh.n_vertices() != cage.positions.size() || mesh.n_faces() != cage.faces.size()) {
-        throw ContentError(cage.source, "OpenMesh read " + std::to_string(mesh.n_vertices()) +
-                                            " vertices and " + std::to_string(mesh.n_faces()) +
-                                            " faces, but the file has " +
-                                            std::to_string(cage.positions.size()) + " and " +
-                                            std::to_string(cage.faces.size()));
-    }
-    for (const auto vh : mesh.vertices()) {
-        const auto& p = mesh.point(vh);
-        cage.positions[static_cast<std::size_t>(vh.idx())] = glm::vec3(p[0], p[1], p[2]);
-    }
-    for (const auto fh : mesh.faces()) {
-        auto& face = cage.faces[static_cast<std::size_t>(fh.idx())];
+    std::vector<PolyMesh::VertexHandle> face;
+    for (std::size_t f = 0; f < cage.faces.size(); ++f) {
         face.clear();
-        for (const auto vh : mesh.fv_range(fh)) {
-            face.push_back(static_cast<std::uint32_t>(vh.idx()));
+        for (const std::uint32_t v : cage.faces[f]) {
+            face.push_back(vertices[v]);
+        }
+        if (!mesh.add_face(face).is_valid()) {
+            throw ContentError(cage.source, "face " + std::to_string(f + cage.indexBase) +
+                                                " cannot be added to OpenMesh's half-edge mesh");
         }
     }
 }
@@ -243,28 +257,48 @@ void readThroughOpenMesh(const std::filesystem::path& path, Cage& cage) {
 } // namespace
 
 Cage CageLoader::load(const std::filesystem::path& path, std::optional<Scheme> scheme) {
-    Cage cage;
-    cage.source = path.string();
-    if (!std::filesystem::is_regular_file(path)) {
-        throw ContentError(cage.source, "file not found");
+    const std::string source = path.string();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+        throw ContentError(source, "file not found");
     }
-
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension == ".obj") {
-        cage.indexBase = 1;
-        scanObj(path, cage);
-    } else if (extension == ".off") {
-        cage.indexBase = 0;
-        scanOff(path, cage);
-    } else {
-        throw ContentError(cage.source, "unsupported file type '" + extension + "' (expected .obj or .off)");
+    if (extension != ".obj" && extension != ".off") {
+        throw ContentError(source, "unsupported file type '" + extension + "' (expected .obj or .off)");
     }
+    if (const auto size = std::filesystem::file_size(path, error);
+        !error && size > std::numeric_limits<std::uint32_t>::max()) {
+        throw ContentError(source, "is larger than 4 GiB, which cages may not be");
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        throw ContentError(source, "cannot be opened");
+    }
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    return loadFromMemory(text, extension == ".obj" ? Format::Obj : Format::Off, source, scheme);
+}
 
+Cage CageLoader::loadFromMemory(std::string_view text, Format format, const std::string& sourceName,
+                                std::optional<Scheme> scheme) {
+    // Every face corner takes at least two characters, so this keeps Cage::validate's 32-bit corner count
+    // from wrapping around.
+    if (text.size() > std::numeric_limits<std::uint32_t>::max()) {
+        throw ContentError(sourceName, "is larger than 4 GiB, which cages may not be");
+    }
+    Cage cage;
+    cage.source = sourceName;
+    if (format == Format::Obj) {
+        cage.indexBase = 1;
+        scanObj(text, cage);
+    } else {
+        cage.indexBase = 0;
+        scanOff(text, cage);
+    }
     cage.scheme = scheme.value_or(cage.isAllTriangles() ? Scheme::Loop : Scheme::CatmullClark);
     cage.validate();
-    readThroughOpenMesh(path, cage);
+    checkWithOpenMesh(cage);
     return cage;
 }
 

@@ -14,8 +14,13 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <limits>
 #include <map>
 #include <memory>
+#include <span>
+#include <type_traits>
+#include <vector>
 
 namespace content {
 
@@ -23,14 +28,173 @@ namespace {
 
 using engine::EntityId;
 
-/// Reads one glTF file into tinygltf's model and maps the parts we use onto an engine::Scene.
+// Deeper JSON is refused before tinygltf sees it: tinygltf converts `extras` and `extensions` values
+// recursively, so a few hundred thousand nested brackets overflow the stack. Real files nest far less.
+constexpr int kMaxJsonDepth = 128;
+
+/// Fails on JSON nested more than kMaxJsonDepth deep; everything else is left for the JSON parser to judge.
+void checkJsonNesting(std::span<const std::uint8_t> json, const std::string& source) {
+    int depth = 0;
+    bool inString = false;
+    bool escaped = false;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        const std::uint8_t c = json[i];
+        if (escaped) {
+            escaped = false;
+        } else if (inString) {
+            escaped = c == '\\';
+            inString = c != '"';
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) {
+                throw ContentError(source, "not a valid glTF 2.0 file: JSON nested more than " +
+                                               std::to_string(kMaxJsonDepth) + " levels deep at byte " +
+                                               std::to_string(i));
+            }
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+}
+
+template <glm::length_t N>
+bool allFinite(const glm::vec<N, float>& v) {
+    return !glm::any(glm::isnan(v)) && !glm::any(glm::isinf(v));
+}
+
+std::uint32_t readLittleEndian32(std::span<const std::uint8_t> bytes, std::size_t offset) {
+    return std::uint32_t{bytes[offset]} | std::uint32_t{bytes[offset + 1]} << 8 |
+           std::uint32_t{bytes[offset + 2]} << 16 | std::uint32_t{bytes[offset + 3]} << 24;
+}
+
+/// The JSON chunk of a GLB container, after checking the header and chunk layout (glTF 2.0, 4.4). tinygltf
+/// 2.7.0 checks the BIN chunk's length without its 8-byte header and then copies up to 8 bytes past the end
+/// of the data, so the layout is checked here first. Returns the JSON chunk and, through `length`, the GLB's
+/// own length (trailing bytes beyond it are not part of the GLB).
+std::span<const std::uint8_t> glbJsonChunk(std::span<const std::uint8_t> bytes, const std::string& source,
+                                           std::size_t& length) {
+    auto fail = [&](const std::string& detail) {
+        throw ContentError(source, "not a valid glTF 2.0 file: GLB " + detail);
+    };
+    constexpr std::size_t kHeader = 12;
+    constexpr std::size_t kChunkHeader = 8;
+    if (bytes.size() < kHeader + kChunkHeader) {
+        fail("is " + std::to_string(bytes.size()) + " bytes, shorter than its headers");
+    }
+    if (const std::uint32_t version = readLittleEndian32(bytes, 4); version != 2) {
+        fail("header has version " + std::to_string(version) + " (expected 2)");
+    }
+    length = readLittleEndian32(bytes, 8);
+    if (length > bytes.size()) {
+        fail("header says " + std::to_string(length) + " bytes, but there are only " +
+             std::to_string(bytes.size()));
+    }
+    // Sizes are compared by subtraction from `length`, so no sum of values read from the file can wrap.
+    const std::size_t jsonLength = readLittleEndian32(bytes, kHeader);
+    if (readLittleEndian32(bytes, kHeader + 4) != 0x4E4F534Au) { // "JSON"
+        fail("first chunk is not of type JSON");
+    }
+    if (length < kHeader + kChunkHeader || jsonLength > length - kHeader - kChunkHeader) {
+        fail("JSON chunk of " + std::to_string(jsonLength) + " bytes overruns the GLB's " +
+             std::to_string(length) + " bytes");
+    }
+    const std::size_t binStart = kHeader + kChunkHeader + jsonLength;
+    if (binStart < length) {
+        if (length - binStart < kChunkHeader) {
+            fail("ends inside the header of its second chunk");
+        }
+        const std::size_t binLength = readLittleEndian32(bytes, binStart);
+        if (binLength > length - binStart - kChunkHeader) {
+            fail("BIN chunk of " + std::to_string(binLength) + " bytes overruns the GLB's " +
+                 std::to_string(length) + " bytes");
+        }
+    }
+    return bytes.subspan(kHeader + kChunkHeader, jsonLength);
+}
+
+/// tinygltf's file access, confined to one folder: a scene from an untrusted source must not make the loader
+/// read files elsewhere, and tinygltf on its own also looks in the working directory.
+class ConfinedFiles {
+public:
+    explicit ConfinedFiles(const std::filesystem::path& folder) {
+        if (!folder.empty()) {
+            std::error_code error;
+            folder_ = std::filesystem::weakly_canonical(folder, error);
+            if (error) { // e.g. a component without search permission: then nothing inside can be read either
+                folder_ = folder.lexically_normal();
+            }
+        }
+    }
+
+    /// tinygltf gets an empty base folder, so it hands every URI to expand() unchanged (and once more as
+    /// "./uri"): the folder is applied here, where it is also checked.
+    tinygltf::FsCallbacks callbacks() { return {&exists, &expand, &read, &write, this}; }
+
+    /// The first path refused for lying outside the folder, or empty.
+    [[nodiscard]] const std::string& refused() const { return refused_; }
+    [[nodiscard]] std::string folderName() const { return folder_.string(); }
+
+private:
+    static ConfinedFiles& self(void* user) { return *static_cast<ConfinedFiles*>(user); }
+
+    bool inside(const std::string& path) {
+        std::error_code error;
+        const std::filesystem::path resolved = std::filesystem::weakly_canonical(path, error);
+        bool ok = !folder_.empty() && !error;
+        if (ok) {
+            const auto [end, unused] =
+                std::mismatch(folder_.begin(), folder_.end(), resolved.begin(), resolved.end());
+            ok = end == folder_.end();
+        }
+        if (!ok && refused_.empty()) {
+            refused_ = path;
+        }
+        return ok;
+    }
+
+    static std::string expand(const std::string& uri, void* user) {
+        const std::filesystem::path& folder = self(user).folder_;
+        return folder.empty() ? uri : (folder / uri).string();
+    }
+
+    static bool exists(const std::string& path, void* user) {
+        std::error_code error;
+        return self(user).inside(path) && std::filesystem::is_regular_file(path, error);
+    }
+
+    static bool read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+        if (!self(user).inside(path)) {
+            *err += "outside the scene's folder";
+            return false;
+        }
+        std::ifstream file(path, std::ios::binary);
+        if (!file) {
+            *err += "cannot be opened";
+            return false;
+        }
+        out->assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+        return true;
+    }
+
+    static bool write(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+        return false;
+    }
+
+    std::filesystem::path folder_;
+    std::string refused_;
+};
+
+/// Reads one glTF document into tinygltf's model and maps the parts we use onto an engine::Scene.
 class GltfSceneBuilder {
 public:
-    GltfSceneBuilder(std::filesystem::path path, const SceneLoadOptions& options)
-        : path_(std::move(path)), source_(path_.string()), options_(options) {}
+    GltfSceneBuilder(std::filesystem::path baseFolder, std::string sourceName,
+                     const SceneLoadOptions& options)
+        : baseFolder_(std::move(baseFolder)), source_(std::move(sourceName)), options_(options) {}
 
-    LoadedScene build() {
-        readModel();
+    LoadedScene build(std::span<const std::uint8_t> bytes) {
+        readModel(bytes);
+        visited_.assign(model_.nodes.size(), false);
         if (model_.scenes.empty()) {
             // A file without scenes still describes nodes: show every root node.
             std::vector<bool> isChild(model_.nodes.size(), false);
@@ -61,12 +225,23 @@ public:
 private:
     [[noreturn]] void fail(const std::string& detail) const { throw ContentError(source_, detail); }
 
-    void readModel() {
-        std::error_code error;
-        if (!std::filesystem::is_regular_file(path_, error)) {
-            fail("file not found");
+    void readModel(std::span<const std::uint8_t> bytes) {
+        // tinygltf takes sizes as unsigned int.
+        if (bytes.size() > std::numeric_limits<unsigned int>::max()) {
+            fail("is larger than 4 GiB, which glTF does not support");
         }
+        const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+        if (binary) {
+            std::size_t length = 0;
+            checkJsonNesting(glbJsonChunk(bytes, source_, length), source_);
+            bytes = bytes.first(length);
+        } else {
+            checkJsonNesting(bytes, source_);
+        }
+        const auto size = static_cast<unsigned int>(bytes.size());
+        ConfinedFiles files(baseFolder_);
         tinygltf::TinyGLTF loader;
+        loader.SetFsCallbacks(files.callbacks());
         // Textures are not used: skip decoding images (and failing on formats we cannot read).
         loader.SetImageLoader([](tinygltf::Image*, const int, std::string*, std::string*, int, int,
                                  const unsigned char*, int, void*) { return true; },
@@ -74,10 +249,29 @@ private:
         std::string errors;
         std::string warnings;
         bool ok = false;
-        if (isBinary()) {
-            ok = loader.LoadBinaryFromFile(&model_, &errors, &warnings, path_.string());
-        } else {
-            ok = loader.LoadASCIIFromFile(&model_, &errors, &warnings, path_.string());
+        try {
+            if (binary) {
+                ok = loader.LoadBinaryFromMemory(&model_, &errors, &warnings, bytes.data(), size, "");
+            } else {
+                ok = loader.LoadASCIIFromString(&model_, &errors, &warnings,
+                                                reinterpret_cast<const char*>(bytes.data()), size, "");
+            }
+        } catch (const std::exception& error) {
+            // tinygltf reports most problems through `errors` but lets some escape as exceptions (e.g.
+            // std::out_of_range for a zero-length buffer in a GLB).
+            errors += error.what();
+        }
+        if (!files.refused().empty()) {
+            const std::string refusal =
+                "external file '" + files.refused() + "' was not read: " +
+                (files.folderName().empty()
+                     ? "no external file may be read (loaded from memory without a base folder)"
+                     : "it lies outside the folder " + files.folderName());
+            // Buffers are required, so a refused one fails the load; images are optional (and unused).
+            if (!ok) {
+                fail(refusal);
+            }
+            result_.warnings.push_back(source_ + ": " + refusal);
         }
         if (!ok) {
             fail("not a valid glTF 2.0 file: " +
@@ -86,13 +280,6 @@ private:
         if (!warnings.empty()) {
             result_.warnings.push_back(trim(warnings));
         }
-    }
-
-    bool isBinary() const {
-        std::ifstream file(path_, std::ios::binary);
-        char magic[4] = {};
-        file.read(magic, 4);
-        return file.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
     }
 
     static std::string trim(std::string text) {
@@ -112,12 +299,19 @@ private:
     }
 
     void addNode(int index, EntityId parent, int depth) {
-        // glTF forbids cycles; a malformed file could still contain one.
+        // The depth limit bounds the recursion; cycles and shared children are caught below.
         if (depth > 256) {
-            fail("node " + std::to_string(index) + " is nested more than 256 deep (a cycle in 'children'?)");
+            fail("node " + std::to_string(index) + " is nested more than 256 deep");
         }
         const tinygltf::Node& node = at(model_.nodes, index, "node");
         const std::string field = "nodes[" + std::to_string(index) + "]";
+        // glTF node hierarchies are disjoint trees (glTF 2.0, 3.5.3). A node reached twice is a cycle, or a
+        // child shared between parents, which would instantiate its subtree once per path: exponentially
+        // many entities from a few bytes.
+        if (visited_[static_cast<std::size_t>(index)]) {
+            fail(field + " is reached twice in the node hierarchy (a cycle, or a node with two parents)");
+        }
+        visited_[static_cast<std::size_t>(index)] = true;
         const EntityId entity =
             result_.scene.create(node.name.empty() ? "node" + std::to_string(index) : node.name, parent);
         result_.scene.entity(entity).transform = nodeTransform(node, field);
@@ -142,8 +336,10 @@ private:
             if (values.empty()) {
                 return false;
             }
-            if (values.size() != size ||
-                !std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); })) {
+            // Finite as floats, which the transform stores: 1e300 is a finite double but an infinite float.
+            if (values.size() != size || !std::all_of(values.begin(), values.end(), [](double v) {
+                    return std::isfinite(static_cast<float>(v));
+                })) {
                 fail(field + "." + name + " must hold " + std::to_string(size) + " finite numbers");
             }
             return true;
@@ -161,22 +357,35 @@ private:
             transform.translation = glm::vec3(translation);
             transform.rotation = glm::quat(rotation);
             transform.scale = glm::vec3(scale);
+            if (!isFinite(transform)) {
+                fail(field + ".matrix has no finite translation, rotation and scale");
+            }
             return transform;
         }
         if (finite(node.translation, 3, "translation")) {
             transform.translation = glm::vec3(glm::make_vec3(node.translation.data()));
         }
         if (finite(node.rotation, 4, "rotation")) {
-            // glTF stores quaternions as x, y, z, w.
+            // glTF stores quaternions as x, y, z, w. Normalised in double, where squares of float-sized
+            // components cannot overflow; glm::normalize would turn a zero quaternion into the identity.
             const auto& r = node.rotation;
-            transform.rotation =
-                glm::normalize(glm::quat(static_cast<float>(r[3]), static_cast<float>(r[0]),
-                                         static_cast<float>(r[1]), static_cast<float>(r[2])));
+            const glm::dquat rotation(r[3], r[0], r[1], r[2]);
+            const double length = glm::length(rotation);
+            if (!(length > 0.0)) {
+                fail(field + ".rotation must be a non-zero quaternion");
+            }
+            transform.rotation = glm::quat(rotation / length);
         }
         if (finite(node.scale, 3, "scale")) {
             transform.scale = glm::vec3(glm::make_vec3(node.scale.data()));
         }
         return transform;
+    }
+
+    static bool isFinite(const engine::Transform& transform) {
+        const glm::vec4 rotation(transform.rotation.x, transform.rotation.y, transform.rotation.z,
+                                 transform.rotation.w);
+        return allFinite(transform.translation) && allFinite(rotation) && allFinite(transform.scale);
     }
 
     engine::CameraComponent camera(const tinygltf::Camera& source) const {
@@ -193,6 +402,10 @@ private:
             camera.orthographicHeight = 2.0f * static_cast<float>(source.orthographic.ymag);
             camera.nearPlane = static_cast<float>(source.orthographic.znear);
             camera.farPlane = static_cast<float>(source.orthographic.zfar);
+            // A zero or infinite view height makes a singular projection matrix.
+            if (!(camera.orthographicHeight > 0.0f) || !std::isfinite(camera.orthographicHeight)) {
+                fail("camera '" + source.name + "' needs a finite ymag > 0");
+            }
         } else {
             fail("camera '" + source.name + "' has unknown type '" + source.type + "'");
         }
@@ -234,6 +447,9 @@ private:
         }
         if (source.color.size() == 3) {
             light.color = glm::vec3(glm::make_vec3(source.color.data()));
+            if (!allFinite(light.color) || glm::any(glm::lessThan(light.color, glm::vec3(0.0f)))) {
+                fail("light " + std::to_string(index) + " needs a color of finite, non-negative numbers");
+            }
         }
         light.intensity = static_cast<float>(source.intensity);
         light.range = static_cast<float>(source.range);
@@ -242,28 +458,34 @@ private:
             fail("light " + std::to_string(index) + " needs a finite, non-negative intensity and range");
         }
         if (source.extras.IsObject() && source.extras.Has("castsShadows")) {
-            light.castsShadows = source.extras.Get("castsShadows").Get<bool>();
+            const tinygltf::Value& castsShadows = source.extras.Get("castsShadows");
+            if (!castsShadows.IsBool()) {
+                fail("light " + std::to_string(index) + " extras.castsShadows must be true or false");
+            }
+            light.castsShadows = castsShadows.Get<bool>();
         }
         result_.scene.entity(entity).light = light;
     }
 
-    /// Copies accessor `index` element by element, checking every offset against its view and buffer.
+    /// Copies accessor `index`, after checking that all its elements lie inside its bufferView and buffer.
     template <typename Element>
-    std::vector<Element> readFloatAccessor(int index, int expectedType, const std::string& field) const {
+    std::vector<Element> readFloatAccessor(int index, int expectedType, const std::string& field) {
         const tinygltf::Accessor& accessor = at(model_.accessors, index, field + " accessor");
         const std::string where = "accessors[" + std::to_string(index) + "] (" + field + ")";
         if (accessor.type != expectedType || accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
             fail(where + " must be " + (expectedType == TINYGLTF_TYPE_VEC3 ? "VEC3" : "VEC4") +
                  " of FLOAT (quantised attributes are not supported)");
         }
-        std::vector<Element> values(accessor.count);
-        copyElements(accessor, where, sizeof(Element), [&](std::size_t i, const unsigned char* bytes) {
-            std::memcpy(&values[i], bytes, sizeof(Element));
-        });
+        const ElementRange range = elementRange(accessor, where, sizeof(Element));
+        charge(range.count * sizeof(Element), where);
+        std::vector<Element> values(range.count);
+        for (std::size_t i = 0; i < range.count; ++i) {
+            std::memcpy(&values[i], range.first + range.stride * i, sizeof(Element));
+        }
         return values;
     }
 
-    std::vector<std::uint32_t> readIndices(int index, const std::string& field) const {
+    std::vector<std::uint32_t> readIndices(int index, const std::string& field) {
         const tinygltf::Accessor& accessor = at(model_.accessors, index, field + " accessor");
         const std::string where = "accessors[" + std::to_string(index) + "] (" + field + ")";
         if (accessor.type != TINYGLTF_TYPE_SCALAR) {
@@ -283,8 +505,11 @@ private:
         default:
             fail(where + " must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT");
         }
-        std::vector<std::uint32_t> values(accessor.count);
-        copyElements(accessor, where, size, [&](std::size_t i, const unsigned char* bytes) {
+        const ElementRange range = elementRange(accessor, where, size);
+        charge(range.count * sizeof(std::uint32_t), where);
+        std::vector<std::uint32_t> values(range.count);
+        for (std::size_t i = 0; i < range.count; ++i) {
+            const unsigned char* bytes = range.first + range.stride * i;
             if (size == 1) {
                 values[i] = bytes[0];
             } else if (size == 2) {
@@ -294,46 +519,66 @@ private:
             } else {
                 std::memcpy(&values[i], bytes, 4);
             }
-        });
+        }
         return values;
     }
 
-    template <typename Visit>
-    void copyElements(const tinygltf::Accessor& accessor, const std::string& where, std::size_t elementSize,
-                      Visit visit) const {
+    /// Where an accessor's elements lie: element i starts at first + stride * i.
+    struct ElementRange {
+        const unsigned char* first = nullptr;
+        std::size_t stride = 0;
+        std::size_t count = 0;
+    };
+
+    /// Checks that every element of `accessor` lies inside its bufferView and buffer. Offsets, lengths and
+    /// counts all come from the file, so sizes are compared by subtracting from known-good bounds: a sum or
+    /// product of file values could wrap around and pass the check.
+    ElementRange elementRange(const tinygltf::Accessor& accessor, const std::string& where,
+                              std::size_t elementSize) const {
         if (accessor.sparse.isSparse) {
             fail(where + " is sparse; sparse accessors are not supported");
         }
         if (accessor.count == 0) {
-            return;
+            return {};
         }
         if (accessor.bufferView < 0) {
             fail(where + " has no bufferView (all-zero data is not supported for geometry)");
         }
         const tinygltf::BufferView& view = at(model_.bufferViews, accessor.bufferView, where + " bufferView");
         const tinygltf::Buffer& buffer = at(model_.buffers, view.buffer, "bufferView buffer");
-        const std::uint64_t stride = view.byteStride ? view.byteStride : elementSize;
+        const std::size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
         if (stride < elementSize) {
             fail(where + ": bufferView.byteStride " + std::to_string(stride) +
                  " is smaller than one element");
         }
-        const std::uint64_t viewEnd = static_cast<std::uint64_t>(view.byteOffset) + view.byteLength;
-        if (viewEnd > buffer.data.size()) {
-            fail(where + ": bufferView " + std::to_string(accessor.bufferView) + " ends at byte " +
-                 std::to_string(viewEnd) + " beyond its buffer of " + std::to_string(buffer.data.size()) +
-                 " bytes");
+        const std::size_t bufferSize = buffer.data.size();
+        if (view.byteOffset > bufferSize || view.byteLength > bufferSize - view.byteOffset) {
+            fail(where + ": bufferView " + std::to_string(accessor.bufferView) + " (byteOffset " +
+                 std::to_string(view.byteOffset) + ", byteLength " + std::to_string(view.byteLength) +
+                 ") reaches beyond its buffer of " + std::to_string(bufferSize) + " bytes");
         }
-        const std::uint64_t start = static_cast<std::uint64_t>(view.byteOffset) + accessor.byteOffset;
-        // count is at most what fits in the view, so this product cannot overflow 64 bits for a valid view.
-        const std::uint64_t last =
-            start + stride * (static_cast<std::uint64_t>(accessor.count) - 1) + elementSize;
-        if (accessor.count > viewEnd || last > viewEnd) {
-            fail(where + ": " + std::to_string(accessor.count) + " elements overrun bufferView " +
-                 std::to_string(accessor.bufferView) + " (accessor out of bounds)");
+        // Bytes of the view from the first element's start to the last possible element start.
+        const bool firstFits =
+            accessor.byteOffset <= view.byteLength && elementSize <= view.byteLength - accessor.byteOffset;
+        if (!firstFits ||
+            accessor.count - 1 > (view.byteLength - accessor.byteOffset - elementSize) / stride) {
+            fail(where + ": " + std::to_string(accessor.count) + " elements from byteOffset " +
+                 std::to_string(accessor.byteOffset) + " overrun bufferView " +
+                 std::to_string(accessor.bufferView) + " of " + std::to_string(view.byteLength) +
+                 " bytes (accessor out of bounds)");
         }
-        for (std::size_t i = 0; i < accessor.count; ++i) {
-            visit(i, buffer.data.data() + start + stride * i);
+        return {buffer.data.data() + view.byteOffset + accessor.byteOffset, stride, accessor.count};
+    }
+
+    /// Counts `bytes` of mesh data against SceneLoadOptions::meshByteLimit before they are allocated.
+    void charge(std::uint64_t bytes, const std::string& what) {
+        if (bytes > options_.meshByteLimit - meshBytes_) {
+            fail(what + " needs " + std::to_string(bytes) + " bytes of mesh data, more than is left of the " +
+                 std::to_string(options_.meshByteLimit) +
+                 " bytes the scene may use (SceneLoadOptions::"
+                 "meshByteLimit)");
         }
+        meshBytes_ += bytes;
     }
 
     engine::Material material(int index, const std::string& field) const {
@@ -343,9 +588,12 @@ private:
         }
         const tinygltf::Material& source = at(model_.materials, index, field + ".material");
         const auto& pbr = source.pbrMetallicRoughness;
-        const glm::vec3 base = pbr.baseColorFactor.size() >= 3
-                                   ? glm::vec3(glm::make_vec3(pbr.baseColorFactor.data()))
-                                   : glm::vec3(1.0f);
+        // The spec bounds colour factors to [0, 1]; clamping keeps out-of-range (even infinite) ones
+        // drawable.
+        const glm::vec3 base =
+            pbr.baseColorFactor.size() >= 3
+                ? glm::clamp(glm::vec3(glm::make_vec3(pbr.baseColorFactor.data())), 0.0f, 1.0f)
+                : glm::vec3(1.0f);
         const float metallic = glm::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
         const float roughness = glm::clamp(static_cast<float>(pbr.roughnessFactor), 0.05f, 1.0f);
         // Metals tint their highlight and have no diffuse; dielectrics reflect ~4 % (Real-Time Rendering, 4th
@@ -399,6 +647,7 @@ private:
         if (primitive.indices >= 0) {
             indices = readIndices(primitive.indices, where + ".indices");
         } else {
+            charge(data.positions.size() * sizeof(std::uint32_t), where + " implicit indices");
             indices.resize(data.positions.size());
             for (std::uint32_t i = 0; i < indices.size(); ++i) {
                 indices[i] = i;
@@ -416,8 +665,13 @@ private:
     }
 
     std::vector<std::uint32_t> triangulate(int mode, const std::vector<std::uint32_t>& indices,
-                                           const std::string& where) const {
+                                           const std::string& where) {
         std::vector<std::uint32_t> triangles;
+        if ((mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) &&
+            indices.size() > 2) {
+            charge(3 * (indices.size() - 2) * sizeof(std::uint32_t), where + " triangles");
+            triangles.reserve(3 * (indices.size() - 2));
+        }
         switch (mode) {
         case TINYGLTF_MODE_TRIANGLES:
             if (indices.size() % 3 != 0) {
@@ -458,7 +712,7 @@ private:
             parts.push_back(std::move(data));
         }
         if (auto tag = subdivisionTag(node, field)) {
-            auto surface = std::make_shared<engine::MeshData>(subdivideNamingNode(*tag, parts, field));
+            auto surface = std::make_shared<engine::MeshData>(subdivide(*tag, parts, field));
             surface->material = parts.empty() ? engine::Material{} : parts.front()->material;
             surface->name = mesh.name.empty() ? meshField : mesh.name;
             result_.scene.entity(entity).mesh = engine::MeshComponent{surface};
@@ -512,11 +766,16 @@ private:
 
     engine::MeshData subdivide(const SubdivisionTag& tag,
                                const std::vector<std::shared_ptr<engine::MeshData>>& parts,
-                               const std::string& field) const {
+                               const std::string& field) {
+        const std::string where = field + ".extras.subdivision";
         const Scheme scheme = tag.scheme == "loop" ? Scheme::Loop : Scheme::CatmullClark;
         Cage cage;
         if (!tag.cage.empty()) {
-            cage = CageLoader::load(path_.parent_path() / tag.cage, scheme);
+            if (baseFolder_.empty()) {
+                fail(where + ".cage '" + tag.cage +
+                     "' cannot be read: the scene was loaded from memory without a base folder");
+            }
+            cage = namingNode(where, [&] { return CageLoader::load(baseFolder_ / tag.cage, scheme); });
         } else {
             if (parts.empty()) {
                 fail(field + " is flagged for subdivision but has no triangles and no 'cage' file");
@@ -525,17 +784,35 @@ private:
             cage.scheme = scheme;
         }
         const int level = options_.subdivisionLevel >= 0 ? options_.subdivisionLevel : tag.level;
-        return SubdivisionSurface(std::move(cage)).evaluate(level).mesh;
+        charge(kSubdividedBytesPerFace * refinedFaceCount(cage, level), where);
+        return namingNode(where, [&] { return SubdivisionSurface(std::move(cage)).evaluate(level).mesh; });
     }
 
-    /// Cage problems name the cage file; prefix the glTF file and node that asked for it.
-    engine::MeshData subdivideNamingNode(const SubdivisionTag& tag,
-                                         const std::vector<std::shared_ptr<engine::MeshData>>& parts,
-                                         const std::string& field) const {
+    /// Output mesh bytes per refined face, rounded up: about one vertex (position and normal, 24 bytes) and
+    /// two triangles (24 bytes of indices) per quad; Loop's triangles need half that.
+    static constexpr std::uint64_t kSubdividedBytesPerFace = 48;
+
+    /// Faces of `cage` after `level` uniform refinements: Catmull-Clark splits an n-gon into n quads, then
+    /// every quad into 4; Loop splits every triangle into 4.
+    static std::uint64_t refinedFaceCount(const Cage& cage, int level) {
+        if (level == 0) {
+            return cage.faces.size();
+        }
+        std::uint64_t firstLevel = 0;
+        for (const auto& face : cage.faces) {
+            firstLevel += cage.scheme == Scheme::Loop ? 4 : face.size();
+        }
+        return firstLevel << (2 * (level - 1));
+    }
+
+    /// Runs `action`; cage problems it reports name the cage (its file, or this file and node for a welded
+    /// cage), so they get the glTF file and the node that asked for the cage as a prefix.
+    template <typename Action>
+    std::invoke_result_t<Action> namingNode(const std::string& where, Action action) const {
         try {
-            return subdivide(tag, parts, field);
+            return action();
         } catch (const ContentError& error) {
-            fail(field + ".extras.subdivision: " + error.what());
+            fail(where + ": " + error.what());
         }
     }
 
@@ -565,22 +842,45 @@ private:
         return cage;
     }
 
-    std::filesystem::path path_;
+    std::filesystem::path baseFolder_;
     std::string source_;
     SceneLoadOptions options_;
     tinygltf::Model model_;
     LoadedScene result_;
+    std::vector<bool> visited_;   // per node: already placed in the scene
+    std::uint64_t meshBytes_ = 0; // charged against options_.meshByteLimit so far
 };
 
 } // namespace
 
 LoadedScene GltfLoader::load(const std::filesystem::path& path, const SceneLoadOptions& options) {
-    if (options.subdivisionLevel < -1 || options.subdivisionLevel > SubdivisionSurface::kMaxLevel) {
-        throw ContentError(path.string(), "subdivision level " + std::to_string(options.subdivisionLevel) +
-                                              " is outside [-1, " +
-                                              std::to_string(SubdivisionSurface::kMaxLevel) + "]");
+    const std::string source = path.string();
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+        throw ContentError(source, "file not found");
     }
-    return GltfSceneBuilder(path, options).build();
+    if (const auto size = std::filesystem::file_size(path, error);
+        !error && size > std::numeric_limits<unsigned int>::max()) {
+        throw ContentError(source, "is larger than 4 GiB, which glTF does not support");
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        throw ContentError(source, "cannot be opened");
+    }
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(file),
+                                          std::istreambuf_iterator<char>()};
+    return loadFromMemory(bytes, path.has_parent_path() ? path.parent_path() : ".", source, options);
+}
+
+LoadedScene GltfLoader::loadFromMemory(std::span<const std::uint8_t> bytes,
+                                       const std::filesystem::path& baseFolder, const std::string& sourceName,
+                                       const SceneLoadOptions& options) {
+    if (options.subdivisionLevel < -1 || options.subdivisionLevel > SubdivisionSurface::kMaxLevel) {
+        throw ContentError(sourceName, "subdivision level " + std::to_string(options.subdivisionLevel) +
+                                           " is outside [-1, " +
+                                           std::to_string(SubdivisionSurface::kMaxLevel) + "]");
+    }
+    return GltfSceneBuilder(baseFolder, sourceName, options).build(bytes);
 }
 
 } // namespace content

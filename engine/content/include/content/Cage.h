@@ -55,10 +55,12 @@ struct Cage {
     /// @brief Checks that the cage is a valid input for subdivision, throwing ContentError on the first
     /// problem.
     ///
-    /// Rejects: no faces; non-finite coordinates; faces with fewer than 3 vertices, out-of-range or repeated
-    /// indices, or zero area; edges shared by more than two faces or traversed the same way by two faces;
-    /// vertices used by no face or whose faces form more than one fan (non-manifold vertices); creases that
-    /// are not cage edges; corners out of range; negative or non-finite sharpness; non-triangles under Loop.
+    /// Rejects: no faces; non-finite coordinates; faces with fewer than 3 or more than 65535 vertices
+    /// (OpenSubdiv's valence limit), out-of-range or repeated indices, or zero area; edges shared by more
+    /// than two faces or traversed the same way by two faces; vertices used by no face or by more than 65535
+    /// faces, or whose faces form more than one fan (non-manifold vertices); creases that are not cage edges;
+    /// corners out of range; negative or non-finite sharpness; non-triangles under Loop. Runs in O(n log n)
+    /// of the cage's size.
     void validate() const;
 
     /// @brief True when every face is a triangle.
