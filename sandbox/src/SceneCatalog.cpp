@@ -1,5 +1,7 @@
 #include "SceneCatalog.h"
 
+#include <cli/OptionValues.h>
+
 #include "SandboxError.h"
 
 #include <algorithm>
@@ -20,9 +22,7 @@ SceneCatalog::SceneCatalog(std::filesystem::path contentFolder)
 
 std::filesystem::path SceneCatalog::resolve(const std::string& scene) const {
     const std::filesystem::path given = scene;
-    const bool isPath =
-        given.has_parent_path() || given.extension() == ".gltf" || given.extension() == ".glb";
-    if (isPath) {
+    if (cli::namesSceneFile(given)) {
         if (!std::filesystem::is_regular_file(given)) {
             throw SandboxError("scene file '" + scene + "' does not exist");
         }

@@ -127,15 +127,6 @@ std::string jsonEscape(const std::string& text) {
     return out;
 }
 
-/// A bare name is a content scene; anything with a folder or a glTF extension is a path.
-std::filesystem::path scenePath(const Options& options) {
-    const std::filesystem::path given = options.scene;
-    if (given.has_parent_path() || given.extension() == ".gltf" || given.extension() == ".glb") {
-        return given;
-    }
-    return options.contentFolder / "scenes" / (options.scene + ".gltf");
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -146,7 +137,7 @@ int main(int argc, char** argv) {
         usageError(error.what());
     }
     try {
-        const std::filesystem::path path = scenePath(options);
+        const std::filesystem::path path = cli::scenePath(options.scene, options.contentFolder);
         content::SceneLoadOptions loadOptions;
         loadOptions.subdivisionLevel = options.subdivisionLevel;
         const content::LoadedScene loaded = content::GltfLoader::load(path, loadOptions);

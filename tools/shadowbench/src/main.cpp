@@ -222,11 +222,7 @@ int main(int argc, char** argv) {
         std::cout << "gs-shadowbench: " << total << " runs on " << context.renderer() << ", timing by "
                   << engine::PassTimer::describe(bench.timingMethod()) << "\n";
         for (const std::string& sceneName : options.scenes) {
-            const std::filesystem::path given = sceneName;
-            const bool isPath =
-                given.has_parent_path() || given.extension() == ".gltf" || given.extension() == ".glb";
-            const std::filesystem::path path =
-                isPath ? given : options.contentFolder / "scenes" / (sceneName + ".gltf");
+            const std::filesystem::path path = cli::scenePath(sceneName, options.contentFolder);
             const auto scene = bench.prepare(path.stem().string(), path);
             std::vector<engine::Image> shaded;
             for (const shadowbench::BenchConfig& config : configs) {

@@ -2,6 +2,8 @@
 
 #include <glm/vec2.hpp>
 
+#include <filesystem>
+
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -48,6 +50,18 @@ inline glm::ivec2 sizeIn(std::string_view option, const std::string& text, int l
     }
     return {integerIn(option, text.substr(0, x), low, high),
             integerIn(option, text.substr(x + 1), low, high)};
+}
+
+/// @brief Whether a --scene value names a file (it has a folder or a glTF extension) rather than a content
+/// scene.
+inline bool namesSceneFile(const std::filesystem::path& scene) {
+    return scene.has_parent_path() || scene.extension() == ".gltf" || scene.extension() == ".glb";
+}
+
+/// @brief The glTF a --scene value means: the file itself, or <contentFolder>/scenes/<name>.gltf.
+inline std::filesystem::path scenePath(const std::string& scene, const std::filesystem::path& contentFolder) {
+    return namesSceneFile(scene) ? std::filesystem::path(scene)
+                                 : contentFolder / "scenes" / (scene + ".gltf");
 }
 
 } // namespace cli
