@@ -1,0 +1,414 @@
+// gs-osgshadow: renders a content scene with one of OpenSceneGraph's osgShadow techniques, with the scene's
+// own camera and first directional light, and writes frame times, the shadowed frame and its shadow
+// visibility so the benchmark can compare our techniques against a widely used peer.
+#include "OsgScene.h"
+#include "PeerOutputs.h"
+
+#include <cli/OptionValues.h>
+#include <content/GltfLoader.h>
+#include <engine/Error.h>
+#include <engine/Image.h>
+
+#include <nlohmann/json.hpp>
+
+#include <osg/Camera>
+#include <osg/GL>
+#include <osg/GraphicsContext>
+#include <osg/Notify>
+#include <osg/Version>
+#include <osgShadow/LightSpacePerspectiveShadowMap>
+#include <osgShadow/ShadowMap>
+#include <osgShadow/ShadowSettings>
+#include <osgShadow/ShadowedScene>
+#include <osgShadow/SoftShadowMap>
+#include <osgShadow/ViewDependentShadowMap>
+#include <osgViewer/Viewer>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* kProgram = "gs-osgshadow";
+
+struct Options {
+    std::string scene;
+    std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    std::string technique = "vdsm";
+    glm::ivec2 size{640, 480};
+    int mapSize = 2048;
+    int frames = 20;
+    int warmup = 5;
+    std::string outPrefix;
+    bool verbose = false;
+};
+
+constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PREFIX [options]
+  --scene FILE     .gltf/.glb path, or a content scene name (content/scenes/NAME.gltf)
+  --out PREFIX     writes PREFIX.json, PREFIX.png (shadowed frame) and PREFIX.visibility.pfm
+  --technique T    vdsm (ViewDependentShadowMap), sm (ShadowMap), lispsm (LightSpacePerspectiveShadowMapVB),
+                   ssm (SoftShadowMap)                             [vdsm]
+  --size WxH       image size in pixels, 1..16384 each             [640x480]
+  --map-size N     shadow map resolution, 16..16384                [2048]
+  --frames N       timed frames per pass, 1..1000                  [20]
+  --warmup N       untimed frames before each pass, 0..1000        [5]
+  --content DIR    folder that scene names resolve in              [the repository's content/]
+  --verbose        pass OpenSceneGraph's warnings through to stderr
+  --help           this text
+Needs an X display with GLX (e.g. xvfb-run -a -s "-screen 0 1280x1024x24").)";
+
+[[noreturn]] void usageError(const std::string& message) {
+    std::cerr << kProgram << ": " << message << "\n" << kUsage << "\n";
+    std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+    Options options;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) {
+                usageError(arg + " needs a value");
+            }
+            return argv[++i];
+        };
+        if (arg == "--help") {
+            std::cout << kUsage << "\n";
+            std::exit(0);
+        } else if (arg == "--scene") {
+            options.scene = value();
+        } else if (arg == "--content") {
+            options.contentFolder = value();
+        } else if (arg == "--technique") {
+            options.technique = value();
+            if (options.technique != "vdsm" && options.technique != "sm" && options.technique != "lispsm" &&
+                options.technique != "ssm") {
+                usageError("--technique: unknown technique '" + options.technique +
+                           "' (vdsm, sm, lispsm, ssm)");
+            }
+        } else if (arg == "--size") {
+            options.size = cli::sizeIn("--size", value(), 1, 16384);
+        } else if (arg == "--map-size") {
+            options.mapSize = cli::integerIn("--map-size", value(), 16, 16384);
+        } else if (arg == "--frames") {
+            options.frames = cli::integerIn("--frames", value(), 1, 1000);
+        } else if (arg == "--warmup") {
+            options.warmup = cli::integerIn("--warmup", value(), 0, 1000);
+        } else if (arg == "--out") {
+            options.outPrefix = value();
+            if (options.outPrefix.empty()) {
+                usageError("--out: the prefix is empty");
+            }
+        } else if (arg == "--verbose") {
+            options.verbose = true;
+        } else {
+            usageError("unknown option '" + arg + "'");
+        }
+    }
+    if (options.scene.empty()) {
+        usageError("--scene is required");
+    }
+    if (options.outPrefix.empty()) {
+        usageError("--out is required");
+    }
+    return options;
+}
+
+/// A failure at run time (no display, no context, no frame): the message is the whole error line.
+class RunError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// OSG prints notices and warnings straight to the console; errors must stay one clear line, so its messages
+// are held back (and counted) unless --verbose asks for them.
+class OsgMessages : public osg::NotifyHandler {
+public:
+    explicit OsgMessages(bool verbose) : verbose_(verbose) {}
+    void notify(osg::NotifySeverity severity, const char* message) override {
+        if (severity <= osg::WARN) {
+            ++warnings;
+        }
+        if (verbose_) {
+            std::cerr << kProgram << ": osg: " << message;
+        }
+    }
+    int warnings = 0;
+
+private:
+    bool verbose_;
+};
+
+/// What the final-draw callback does and found; the callback itself must be const.
+struct FrameEnd {
+    GLenum readBuffer = GL_BACK;
+    glm::ivec2 size{0};
+    std::string renderer;
+    bool captureNext = false;
+    std::optional<osgpeer::RgbFrame> captured;
+};
+
+// Runs after everything the camera drew, shadow passes included: glFinish makes the timed frame include the
+// GPU work, and the read-back happens before a window's buffer swap.
+class FinishAndCapture : public osg::Camera::DrawCallback {
+public:
+    explicit FinishAndCapture(FrameEnd& state) : state_(state) {}
+    void operator()(osg::RenderInfo& /*renderInfo*/) const override {
+        glFinish();
+        if (state_.renderer.empty()) {
+            const GLubyte* renderer = glGetString(GL_RENDERER);
+            state_.renderer = renderer ? reinterpret_cast<const char*>(renderer) : "unknown";
+        }
+        if (state_.captureNext) {
+            osgpeer::RgbFrame frame;
+            frame.size = state_.size;
+            frame.rgb.resize(static_cast<std::size_t>(state_.size.x) *
+                             static_cast<std::size_t>(state_.size.y) * 3);
+            glReadBuffer(state_.readBuffer);
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glReadPixels(0, 0, state_.size.x, state_.size.y, GL_RGB, GL_UNSIGNED_BYTE, frame.rgb.data());
+            if (glGetError() == GL_NO_ERROR) {
+                state_.captured = std::move(frame);
+            }
+            state_.captureNext = false;
+        }
+    }
+
+private:
+    FrameEnd& state_;
+};
+
+struct Context {
+    osg::ref_ptr<osg::GraphicsContext> context;
+    bool pbuffer = false;
+};
+
+// A pbuffer keeps the surface exactly WxH with nothing on screen; a window is the fallback for GLX servers
+// without pbuffer configurations.
+Context createContext(glm::ivec2 size) {
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display) {
+        throw RunError(
+            "no X display: DISPLAY is not set (run under xvfb-run -a -s \"-screen 0 1280x1024x24\")");
+    }
+    for (const bool pbuffer : {true, false}) {
+        osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
+        traits->readDISPLAY();
+        traits->setUndefinedScreenDetailsToDefaultScreen();
+        traits->x = 0;
+        traits->y = 0;
+        traits->width = size.x;
+        traits->height = size.y;
+        traits->red = traits->green = traits->blue = 8;
+        traits->alpha = 0;
+        traits->depth = 24;
+        traits->samples = 0; // our renderer does not multisample either
+        traits->pbuffer = pbuffer;
+        traits->doubleBuffer = !pbuffer;
+        traits->windowDecoration = false;
+        traits->vsync = false;
+        osg::ref_ptr<osg::GraphicsContext> context = osg::GraphicsContext::createGraphicsContext(traits);
+        if (context && context->valid()) {
+            return {context, pbuffer};
+        }
+    }
+    throw RunError(std::string("cannot create an OpenGL context on X display '") + display +
+                   "' (neither a GLX pbuffer nor a window; is the X server running with GLX?)");
+}
+
+struct Technique {
+    osg::ref_ptr<osgShadow::ShadowTechnique> technique;
+    std::string osgClass;
+};
+
+Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::OsgScene& scene,
+                        osgShadow::ShadowedScene& shadowed) {
+    const auto side = static_cast<short>(mapSize);
+    if (name == "vdsm") {
+        osgShadow::ShadowSettings* settings = shadowed.getShadowSettings();
+        settings->setTextureSize(osg::Vec2s(side, side));
+        settings->setLightNum(static_cast<int>(scene.light->getLight()->getLightNum()));
+        // Its shader shades shadowed fragments with gl_FrontLightModelProduct.sceneColor (emission +
+        // ambient), which our zero ambient and emission make black: no bias to undo.
+        return {new osgShadow::ViewDependentShadowMap, "osgShadow::ViewDependentShadowMap"};
+    }
+    if (name == "sm" || name == "ssm") {
+        osg::ref_ptr<osgShadow::ShadowMap> map;
+        if (name == "sm") {
+            map = new osgShadow::ShadowMap;
+        } else {
+            map = new osgShadow::SoftShadowMap;
+        }
+        map->setTextureSize(osg::Vec2s(side, side));
+        map->setLight(scene.light.get());
+        // Colour = lit * (bias.x + shadow * bias.y); the default (0.5, 0.5) leaves shadow at half brightness,
+        // (0, 1) makes the shadowed/unshadowed ratio the shadow term itself.
+        map->setAmbientBias(osg::Vec2(0.0f, 1.0f));
+        return {map, name == "sm" ? "osgShadow::ShadowMap" : "osgShadow::SoftShadowMap"};
+    }
+    osg::ref_ptr<osgShadow::LightSpacePerspectiveShadowMapVB> lispsm =
+        new osgShadow::LightSpacePerspectiveShadowMapVB;
+    lispsm->setTextureSize(osg::Vec2s(side, side));
+    lispsm->setLight(scene.light->getLight());
+    // StandardShadowMap's shader shades shadowed fragments with scene ambient + light 0 ambient: both zero
+    // here.
+    return {lispsm, "osgShadow::LightSpacePerspectiveShadowMapVB"};
+}
+
+double milliseconds(std::chrono::steady_clock::duration duration) {
+    return std::chrono::duration<double, std::milli>(duration).count();
+}
+
+/// Renders `graph` for `warmup` + `frames` frames (timing the latter) and one more that is read back.
+std::vector<double> runPass(osgViewer::Viewer& viewer, osg::Node* graph, const Options& options,
+                            FrameEnd& end, osgpeer::RgbFrame& frame, const char* pass) {
+    viewer.setSceneData(graph);
+    for (int i = 0; i < options.warmup; ++i) {
+        viewer.frame();
+    }
+    std::vector<double> times;
+    times.reserve(static_cast<std::size_t>(options.frames));
+    for (int i = 0; i < options.frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        viewer.frame(); // the final-draw callback's glFinish ends inside this call
+        times.push_back(milliseconds(std::chrono::steady_clock::now() - start));
+    }
+    end.captured.reset();
+    end.captureNext = true;
+    viewer.frame();
+    if (!end.captured) {
+        throw RunError(std::string("the ") + pass +
+                       " frame could not be read back (glReadPixels failed or the "
+                       "camera did not draw)");
+    }
+    frame = std::move(*end.captured);
+    end.captured.reset();
+    return times;
+}
+
+nlohmann::ordered_json toJson(const osgpeer::FrameTimes& times) {
+    return {{"median", times.median}, {"min", times.min}, {"max", times.max}};
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options options;
+    try {
+        options = parse(argc, argv);
+    } catch (const std::invalid_argument& error) {
+        usageError(error.what());
+    }
+    osg::ref_ptr<OsgMessages> messages = new OsgMessages(options.verbose);
+    osg::setNotifyHandler(messages.get());
+    osg::setNotifyLevel(options.verbose ? osg::NOTICE : osg::WARN);
+
+    try {
+        const std::filesystem::path path = cli::scenePath(options.scene, options.contentFolder);
+        const content::LoadedScene loaded = content::GltfLoader::load(path);
+        for (const std::string& warning : loaded.warnings) {
+            std::cerr << kProgram << ": warning: " << warning << "\n";
+        }
+        const osgpeer::OsgScene scene = osgpeer::buildOsgScene(loaded.scene, path.string(), options.size);
+
+        osg::ref_ptr<osg::Group> unshadowed = osgpeer::unshadowedGraph(scene);
+        osg::ref_ptr<osgShadow::ShadowedScene> shadowedScene = new osgShadow::ShadowedScene;
+        const Technique technique = makeTechnique(options.technique, options.mapSize, scene, *shadowedScene);
+        shadowedScene->setShadowTechnique(technique.technique.get());
+        shadowedScene->addChild(scene.light);
+        shadowedScene->addChild(scene.meshes);
+        osg::ref_ptr<osg::Group> shadowed = new osg::Group;
+        shadowed->setStateSet(scene.lighting);
+        shadowed->addChild(shadowedScene);
+
+        const Context context = createContext(options.size);
+        FrameEnd end;
+        end.size = options.size;
+        end.readBuffer = context.pbuffer ? GL_FRONT : GL_BACK;
+
+        osgViewer::Viewer viewer;
+        viewer.setThreadingModel(osgViewer::Viewer::SingleThreaded);
+        // No headlight or sky light: the scene's light is the only one.
+        viewer.setLightingMode(osg::View::NO_LIGHT);
+        viewer.setReleaseContextAtEndOfFrameHint(false);
+        osg::Camera* camera = viewer.getCamera();
+        camera->setGraphicsContext(context.context.get());
+        camera->setViewport(0, 0, options.size.x, options.size.y);
+        camera->setDrawBuffer(end.readBuffer);
+        camera->setReadBuffer(end.readBuffer);
+        camera->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        // Exactly the scene's projection: OSG would otherwise tighten near/far to the scene's bounds.
+        camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+        // Small-feature culling would drop distant thin geometry our renderer draws.
+        camera->setCullingMode(camera->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
+        camera->setProjectionMatrix(scene.projection);
+        camera->setViewMatrix(scene.view);
+        camera->setFinalDrawCallback(new FinishAndCapture(end));
+        viewer.setSceneData(unshadowed);
+        viewer.realize();
+        if (!viewer.isRealized()) {
+            throw RunError("the OpenGL context could not be realized on X display '" +
+                           std::string(std::getenv("DISPLAY")) + "'");
+        }
+
+        osgpeer::RgbFrame unshadowedFrame;
+        osgpeer::RgbFrame shadowedFrame;
+        const osgpeer::FrameTimes unshadowedTimes = osgpeer::summarize(
+            runPass(viewer, unshadowed.get(), options, end, unshadowedFrame, "unshadowed"));
+        const osgpeer::FrameTimes shadowedTimes =
+            osgpeer::summarize(runPass(viewer, shadowed.get(), options, end, shadowedFrame, "shadowed"));
+
+        const std::string prefix = options.outPrefix;
+        const std::vector<float> visibility = osgpeer::visibility(shadowedFrame, unshadowedFrame);
+        osgpeer::writePfm(prefix + ".visibility.pfm", options.size, visibility);
+        engine::writePng(prefix + ".png", osgpeer::toImage(shadowedFrame));
+
+        const nlohmann::ordered_json report = {
+            {"technique", options.technique},
+            {"osgClass", technique.osgClass},
+            {"renderer", end.renderer},
+            {"timingMethod", "glFinish + steady clock"},
+            {"size", {options.size.x, options.size.y}},
+            {"mapSize", options.mapSize},
+            {"frames", options.frames},
+            {"warmup", options.warmup},
+            {"unshadowedMs", toJson(unshadowedTimes)},
+            {"shadowedMs", toJson(shadowedTimes)},
+            {"triangles", scene.triangles},
+            {"drawables", scene.drawables},
+            {"scene", path.string()},
+            {"surface", context.pbuffer ? "pbuffer" : "window"},
+            {"osgVersion", osgGetVersion()},
+        };
+        engine::writeTextFile(prefix + ".json", report.dump(2) + "\n");
+
+        if (messages->warnings > 0 && !options.verbose) {
+            std::cerr << kProgram << ": warning: OpenSceneGraph reported " << messages->warnings
+                      << " warning(s); rerun with --verbose to see them\n";
+        }
+        std::ostringstream summary;
+        summary << kProgram << ": " << options.technique << " (" << technique.osgClass << ") "
+                << path.filename().string() << " " << options.size.x << "x" << options.size.y << " map "
+                << options.mapSize << ": median " << unshadowedTimes.median << " ms unshadowed, "
+                << shadowedTimes.median << " ms shadowed (" << end.renderer << ", "
+                << (context.pbuffer ? "pbuffer" : "window") << "); wrote " << prefix << ".json, .png, "
+                << ".visibility.pfm\n";
+        std::cout << summary.str();
+        return 0;
+    } catch (const engine::Error& error) { // ContentError (the glTF) and IoError (outputs) included
+        std::cerr << kProgram << ": " << error.what() << "\n";
+    } catch (const osgpeer::PeerError& error) {
+        std::cerr << kProgram << ": " << error.what() << "\n";
+    } catch (const RunError& error) {
+        std::cerr << kProgram << ": " << error.what() << "\n";
+    } catch (const std::exception& error) {
+        std::cerr << kProgram << ": unexpected error: " << error.what() << "\n";
+    }
+    return 1;
+}
