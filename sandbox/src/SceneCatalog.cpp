@@ -9,15 +9,20 @@
 
 namespace sandbox {
 
-SceneCatalog::SceneCatalog(std::filesystem::path contentFolder)
-    : scenesFolder_(std::move(contentFolder) / "scenes") {
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(scenesFolder_, error)) {
-        if (entry.path().extension() == ".gltf") {
-            names_.push_back(entry.path().stem().string());
+SceneCatalog::SceneCatalog(std::filesystem::path contentFolder) : contentFolder_(std::move(contentFolder)) {
+    // Content scenes first, then the real-model corpus when tools/corpus.sh has built it.
+    for (const auto& [folder, extension] : {std::pair{contentFolder_ / "scenes", ".gltf"},
+                                            std::pair{cli::corpusFolder(contentFolder_), ".glb"}}) {
+        std::vector<std::string> names;
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+            if (entry.path().extension() == extension) {
+                names.push_back(entry.path().stem().string());
+            }
         }
+        std::sort(names.begin(), names.end());
+        names_.insert(names_.end(), names.begin(), names.end());
     }
-    std::sort(names_.begin(), names_.end());
 }
 
 std::filesystem::path SceneCatalog::resolve(const std::string& scene) const {
@@ -33,10 +38,10 @@ std::filesystem::path SceneCatalog::resolve(const std::string& scene) const {
         for (const std::string& name : names_) {
             known += (known.empty() ? "" : ", ") + name;
         }
-        throw SandboxError("unknown scene '" + scene + "' (content scenes: " + known +
+        throw SandboxError("unknown scene '" + scene + "' (scenes: " + known +
                            "; or give a .gltf/.glb path)");
     }
-    return scenesFolder_ / (scene + ".gltf");
+    return cli::scenePath(scene, contentFolder_);
 }
 
 } // namespace sandbox

@@ -6,12 +6,13 @@
 
 namespace sandbox {
 
-/// @brief The content scenes (content/scenes/NAME.gltf) and how scene names given by people resolve to files.
+/// @brief The content scenes (content/scenes/NAME.gltf), the real-model corpus (corpus/NAME.glb, when built) and
+/// how scene names given by people resolve to files.
 class SceneCatalog {
 public:
     explicit SceneCatalog(std::filesystem::path contentFolder);
 
-    /// @brief Names of the content scenes, sorted.
+    /// @brief Names of the content scenes, sorted, then those of the corpus, sorted.
     [[nodiscard]] const std::vector<std::string>& names() const { return names_; }
 
     /// @brief The file of `scene`: a bare name is a content scene; anything with a folder or a .gltf/.glb
@@ -20,7 +21,7 @@ public:
     [[nodiscard]] std::filesystem::path resolve(const std::string& scene) const;
 
 private:
-    std::filesystem::path scenesFolder_;
+    std::filesystem::path contentFolder_;
     std::vector<std::string> names_;
 };
 

@@ -78,7 +78,7 @@ TEST(SandboxCliTest, UnknownTechniqueExits2) {
 
 TEST(SandboxCliTest, UnknownSceneExits2) {
     expectFailure("--headless --scene nope", 2,
-                  "--scene: unknown scene 'nope' (content scenes: bowl, crease-cube,");
+                  "--scene: unknown scene 'nope' (scenes: bowl, crease-cube,");
     expectFailure("--headless --scene /nonexistent/x.gltf", 2,
                   "--scene: scene file '/nonexistent/x.gltf' does not exist");
 }

@@ -58,10 +58,25 @@ inline bool namesSceneFile(const std::filesystem::path& scene) {
     return scene.has_parent_path() || scene.extension() == ".gltf" || scene.extension() == ".glb";
 }
 
-/// @brief The glTF a --scene value means: the file itself, or <contentFolder>/scenes/<name>.gltf.
+/// @brief The real-model corpus that tools/corpus.sh builds: the folder `corpus/` beside `contentFolder`.
+inline std::filesystem::path corpusFolder(const std::filesystem::path& contentFolder) {
+    std::filesystem::path content = std::filesystem::absolute(contentFolder).lexically_normal();
+    if (!content.has_filename()) {
+        content = content.parent_path(); // "content/" names the folder itself
+    }
+    return content.parent_path() / "corpus";
+}
+
+/// @brief The glTF a --scene value means: the file itself, the content scene <contentFolder>/scenes/<name>.gltf,
+/// or else the corpus scene <corpusFolder>/<name>.glb when that exists.
 inline std::filesystem::path scenePath(const std::string& scene, const std::filesystem::path& contentFolder) {
-    return namesSceneFile(scene) ? std::filesystem::path(scene)
-                                 : contentFolder / "scenes" / (scene + ".gltf");
+    if (namesSceneFile(scene)) {
+        return scene;
+    }
+    const std::filesystem::path contentScene = contentFolder / "scenes" / (scene + ".gltf");
+    const std::filesystem::path corpusScene = corpusFolder(contentFolder) / (scene + ".glb");
+    return !std::filesystem::exists(contentScene) && std::filesystem::exists(corpusScene) ? corpusScene
+                                                                                           : contentScene;
 }
 
 } // namespace cli
