@@ -46,6 +46,7 @@ struct Options {
     int frames = 20;
     int warmup = 5;
     std::string outPrefix;
+    std::string surface = "auto";
     bool verbose = false;
 };
 
@@ -59,6 +60,7 @@ constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PR
   --frames N       timed frames per pass, 1..1000                  [20]
   --warmup N       untimed frames before each pass, 0..1000        [5]
   --content DIR    folder that scene names resolve in              [the repository's content/]
+  --surface S      auto (pbuffer, else window), pbuffer or window  [auto]
   --verbose        pass OpenSceneGraph's warnings through to stderr
   --help           this text
 Needs an X display with GLX (e.g. xvfb-run -a -s "-screen 0 1280x1024x24").)";
@@ -104,6 +106,11 @@ Options parse(int argc, char** argv) {
             options.outPrefix = value();
             if (options.outPrefix.empty()) {
                 usageError("--out: the prefix is empty");
+            }
+        } else if (arg == "--surface") {
+            options.surface = value();
+            if (options.surface != "auto" && options.surface != "pbuffer" && options.surface != "window") {
+                usageError("--surface: unknown surface '" + options.surface + "' (auto, pbuffer, window)");
             }
         } else if (arg == "--verbose") {
             options.verbose = true;
@@ -191,13 +198,16 @@ struct Context {
 
 // A pbuffer keeps the surface exactly WxH with nothing on screen; a window is the fallback for GLX servers
 // without pbuffer configurations.
-Context createContext(glm::ivec2 size) {
+Context createContext(glm::ivec2 size, const std::string& surface) {
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) {
         throw RunError(
             "no X display: DISPLAY is not set (run under xvfb-run -a -s \"-screen 0 1280x1024x24\")");
     }
     for (const bool pbuffer : {true, false}) {
+        if ((pbuffer && surface == "window") || (!pbuffer && surface == "pbuffer")) {
+            continue;
+        }
         osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
         traits->readDISPLAY();
         traits->setUndefinedScreenDetailsToDefaultScreen();
@@ -218,14 +228,21 @@ Context createContext(glm::ivec2 size) {
             return {context, pbuffer};
         }
     }
-    throw RunError(std::string("cannot create an OpenGL context on X display '") + display +
-                   "' (neither a GLX pbuffer nor a window; is the X server running with GLX?)");
+    const std::string tried = surface == "auto" ? "neither a GLX pbuffer nor a window" : "no GLX " + surface;
+    throw RunError(std::string("cannot create an OpenGL context on X display '") + display + "' (" + tried +
+                   "; is the X server running with GLX?)");
 }
 
 struct Technique {
     osg::ref_ptr<osgShadow::ShadowTechnique> technique;
     std::string osgClass;
+    /// The settings that shape the result, as the report records them.
+    nlohmann::ordered_json settings;
 };
+
+const char* toString(osgShadow::ShadowSettings::ShadowMapProjectionHint hint) {
+    return hint == osgShadow::ShadowSettings::ORTHOGRAPHIC_SHADOW_MAP ? "orthographic" : "perspective";
+}
 
 Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::OsgScene& scene,
                         osgShadow::ShadowedScene& shadowed) {
@@ -236,7 +253,12 @@ Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::Osg
         settings->setLightNum(static_cast<int>(scene.light->getLight()->getLightNum()));
         // Its shader shades shadowed fragments with gl_FrontLightModelProduct.sceneColor (emission +
         // ambient), which our zero ambient and emission make black: no bias to undo.
-        return {new osgShadow::ViewDependentShadowMap, "osgShadow::ViewDependentShadowMap"};
+        const nlohmann::ordered_json record = {
+            {"shadowMapProjectionHint", toString(settings->getShadowMapProjectionHint())},
+            {"numShadowMapsPerLight", settings->getNumShadowMapsPerLight()},
+            {"minimumShadowMapNearFarRatio", settings->getMinimumShadowMapNearFarRatio()},
+            {"shadowedColour", "gl_FrontLightModelProduct.sceneColor (0 here)"}};
+        return {new osgShadow::ViewDependentShadowMap, "osgShadow::ViewDependentShadowMap", record};
     }
     if (name == "sm" || name == "ssm") {
         osg::ref_ptr<osgShadow::ShadowMap> map;
@@ -250,7 +272,14 @@ Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::Osg
         // Colour = lit * (bias.x + shadow * bias.y); the default (0.5, 0.5) leaves shadow at half brightness,
         // (0, 1) makes the shadowed/unshadowed ratio the shadow term itself.
         map->setAmbientBias(osg::Vec2(0.0f, 1.0f));
-        return {map, name == "sm" ? "osgShadow::ShadowMap" : "osgShadow::SoftShadowMap"};
+        nlohmann::ordered_json record = {
+            {"ambientBias", {map->getAmbientBias().x(), map->getAmbientBias().y()}},
+            {"polygonOffset", {map->getPolygonOffset().x(), map->getPolygonOffset().y()}}};
+        if (const auto* soft = dynamic_cast<const osgShadow::SoftShadowMap*>(map.get())) {
+            record["softnessWidth"] = soft->getSoftnessWidth();
+            record["jitteringScale"] = soft->getJitteringScale();
+        }
+        return {map, name == "sm" ? "osgShadow::ShadowMap" : "osgShadow::SoftShadowMap", record};
     }
     osg::ref_ptr<osgShadow::LightSpacePerspectiveShadowMapVB> lispsm =
         new osgShadow::LightSpacePerspectiveShadowMapVB;
@@ -258,7 +287,12 @@ Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::Osg
     lispsm->setLight(scene.light->getLight());
     // StandardShadowMap's shader shades shadowed fragments with scene ambient + light 0 ambient: both zero
     // here.
-    return {lispsm, "osgShadow::LightSpacePerspectiveShadowMapVB"};
+    const nlohmann::ordered_json record = {
+        {"minLightMargin", lispsm->getMinLightMargin()},
+        {"maxFarPlane", lispsm->getMaxFarPlane()},
+        {"shadowedColour",
+         "gl_FrontLightModelProduct.sceneColor + gl_FrontLightProduct[0].ambient (0 here)"}};
+    return {lispsm, "osgShadow::LightSpacePerspectiveShadowMapVB", record};
 }
 
 double milliseconds(std::chrono::steady_clock::duration duration) {
@@ -327,7 +361,7 @@ int main(int argc, char** argv) {
         shadowed->setStateSet(scene.lighting);
         shadowed->addChild(shadowedScene);
 
-        const Context context = createContext(options.size);
+        const Context context = createContext(options.size, options.surface);
         FrameEnd end;
         end.size = options.size;
         end.readBuffer = context.pbuffer ? GL_FRONT : GL_BACK;
@@ -385,6 +419,7 @@ int main(int argc, char** argv) {
             {"scene", path.string()},
             {"surface", context.pbuffer ? "pbuffer" : "window"},
             {"osgVersion", osgGetVersion()},
+            {"osgSettings", technique.settings},
         };
         engine::writeTextFile(prefix + ".json", report.dump(2) + "\n");
 
