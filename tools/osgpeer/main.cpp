@@ -51,7 +51,7 @@ struct Options {
 };
 
 constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PREFIX [options]
-  --scene FILE     .gltf/.glb path, or a content scene name (content/scenes/NAME.gltf)
+  --scene FILE     .gltf/.glb path, or a scene name (content/scenes/NAME.gltf, else corpus/NAME.glb)
   --out PREFIX     writes PREFIX.json, PREFIX.png (shadowed frame) and PREFIX.visibility.pfm
   --technique T    vdsm (ViewDependentShadowMap), sm (ShadowMap), lispsm (LightSpacePerspectiveShadowMapVB),
                    ssm (SoftShadowMap)                             [vdsm]
