@@ -9,6 +9,7 @@
 #include <osg/Material>
 #include <osg/MatrixTransform>
 
+#include <cmath>
 #include <map>
 #include <optional>
 
@@ -116,8 +117,15 @@ OsgScene buildOsgScene(const engine::Scene& scene, const std::string& sourceName
     if (!camera) {
         throw PeerError(sourceName + ": the scene has no camera");
     }
+    const glm::mat4 cameraWorld = scene.worldMatrix(*camera);
+    // A zero scale (or NaN) would give a view matrix of infinities and a silently black frame.
+    const float determinant = glm::determinant(cameraWorld);
+    if (!std::isfinite(determinant) || std::abs(determinant) < 1e-12f) {
+        throw PeerError(sourceName + ": camera '" + scene.entity(*camera).name +
+                        "' has a degenerate transform (its world matrix cannot be inverted)");
+    }
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-    result.view = toOsg(glm::inverse(scene.worldMatrix(*camera)));
+    result.view = toOsg(glm::inverse(cameraWorld));
     result.projection = toOsg(scene.entity(*camera).camera->projectionMatrix(aspect));
 
     std::optional<engine::EntityId> lightEntity;
@@ -132,7 +140,7 @@ OsgScene buildOsgScene(const engine::Scene& scene, const std::string& sourceName
     }
     // A light shines along its entity's local -Z axis.
     const glm::vec3 zAxis = glm::vec3(scene.worldMatrix(*lightEntity)[2]);
-    if (!(glm::length(zAxis) > 0.0f)) {
+    if (!(glm::length(zAxis) > 0.0f) || !std::isfinite(glm::length(zAxis))) {
         throw PeerError(sourceName + ": directional light '" + scene.entity(*lightEntity).name +
                         "' has a degenerate transform (no direction)");
     }
