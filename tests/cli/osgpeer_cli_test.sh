@@ -71,14 +71,15 @@ for technique in vdsm sm; do
         --out "$out/torus-$technique"
     check_outputs "render-$technique" "$out/torus-$technique" "$technique"
 done
-ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; failures=$((failures + 1)); }
 
-# Hand-written one-triangle scenes: one without a directional light (only a spot), one without a camera.
+# Hand-written scenes without normals (the peer computes flat ones): a ground quad and a triangle above it lit
+# from 45 degrees, so its shadow falls beside it; and one-triangle scenes without a directional light (only a
+# spot) and without a camera.
 "$python" - "$out" <<'PY'
 import base64, json, struct, sys
 folder = sys.argv[1]
-triangle = struct.pack("<9f", -1, 0, -1, 1, 0, -1, 0, 0, 1)
-def scene(nodes, lights):
+def scene(nodes, lights, corners=((-1, 0, -1), (1, 0, -1), (0, 0, 1))):
+    triangle = b"".join(struct.pack("<3f", *corner) for corner in corners)
     return {
         "asset": {"version": "2.0"},
         "extensionsUsed": ["KHR_lights_punctual"],
@@ -86,8 +87,9 @@ def scene(nodes, lights):
         "buffers": [{"byteLength": len(triangle),
                      "uri": "data:application/octet-stream;base64," + base64.b64encode(triangle).decode()}],
         "bufferViews": [{"buffer": 0, "byteLength": len(triangle)}],
-        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                       "min": [-1, 0, -1], "max": [1, 0, 1]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": len(corners), "type": "VEC3",
+                       "min": [min(c[i] for c in corners) for i in range(3)],
+                       "max": [max(c[i] for c in corners) for i in range(3)]}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
         "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1, "zfar": 100}}],
         "nodes": [{"mesh": 0}] + nodes,
@@ -95,17 +97,32 @@ def scene(nodes, lights):
         "scene": 0,
     }
 camera = {"camera": 0, "translation": [0, 1, 4]}
+ground = ((-3, 0, 3), (3, 0, 3), (3, 0, -3), (-3, 0, 3), (3, 0, -3), (-3, 0, -3))
+occluder = ((-0.7, 1.5, 0.7), (0.7, 1.5, 0.7), (0, 1.5, -0.7))
+above = {"camera": 0, "translation": [0, 3, 5], "rotation": [-0.2672, 0, 0, 0.9636]}  # 31 degrees down
+# Shines along (1, -1, 0).
+sun = {"extensions": {"KHR_lights_punctual": {"light": 0}}, "rotation": [-0.5, -0.5, 0, 0.7071068]}
+json.dump(scene([above, sun], [{"type": "directional"}], ground + occluder),
+          open(folder + "/flat.gltf", "w"))
 spot = {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 3, 0]}
 json.dump(scene([camera, spot], [{"type": "spot", "spot": {}}]), open(folder + "/no-sun.gltf", "w"))
 json.dump(scene([spot], [{"type": "directional"}]), open(folder + "/no-camera.gltf", "w"))
 PY
+
+# ShadowMap draws only back faces into its map, so this one-sided occluder casts no shadow with sm: use vdsm.
+expect render-flat 0 "vdsm \(osgShadow::.*wrote" -- \
+    "$peer" --scene "$out/flat.gltf" --technique vdsm --size 160x120 --map-size 512 --frames 2 --warmup 1 \
+    --out "$out/flat-vdsm"
+check_outputs render-flat "$out/flat-vdsm" vdsm
+ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; failures=$((failures + 1)); }
 
 expect missingFile 1 "nope\.gltf: file not found" -- "$peer" --scene "$out/nope.gltf" --out "$out/x"
 expect unknownTechnique 2 "--technique: unknown technique 'pcss'" -- \
     "$peer" --scene "$scene" --technique pcss --out "$out/x"
 expect noDirectionalLight 1 "no-sun\.gltf: the scene has no directional light" -- \
     "$peer" --scene "$out/no-sun.gltf" --out "$out/x"
-expect noCamera 1 "no-camera\.gltf: the scene has no camera" -- "$peer" --scene "$out/no-camera.gltf" --out "$out/x"
+expect noCamera 1 "no-camera\.gltf: the scene has no camera" -- \
+    "$peer" --scene "$out/no-camera.gltf" --out "$out/x"
 expect badMapSize 2 "--map-size: '0' is not an integer in \[16, 16384\]" -- \
     "$peer" --scene "$scene" --map-size 0 --out "$out/x"
 expect badSize 2 "--size: 'axb' is not WIDTHxHEIGHT|--size: 'a' is not an integer" -- \
