@@ -9,6 +9,8 @@ uniform mat3 uNormalMatrix;
 
 out vec3 vWorldPosition;
 out vec3 vWorldNormal;
+// The depth pre-pass and the lighting pass must produce bit-identical depth for their EQUAL test.
+invariant gl_Position;
 
 void main() {
     vec4 world = uModel * vec4(inPosition, 1.0);

@@ -101,9 +101,14 @@ GLuint Engine::reserveTextureUnit() {
     return nextTextureUnit_++;
 }
 
-void Engine::drawMeshes(const Scene& scene,
+void Engine::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
                         const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
-    renderer_.drawMeshes(scene, beforeDraw);
+    renderer_.drawMeshes(scene, cullViewProjection, beforeDraw);
+}
+
+void Engine::forEachMeshBounds(const Scene& scene,
+                               const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) {
+    renderer_.forEachMeshBounds(scene, visit);
 }
 
 void Engine::setPassTiming(std::optional<TimingMethod> method) {

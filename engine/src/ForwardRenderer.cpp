@@ -27,6 +27,7 @@ struct alignas(16) FrameBlock {
 static_assert(sizeof(FrameBlock) == 64 + 16 * 3 + 64 * ForwardRenderer::kMaxLights);
 
 const ProgramDesc kForwardProgram{"forward.vert", "forward.frag"};
+const ProgramDesc kDepthOnlyProgram{"forward.vert", "depth_only.frag"};
 
 struct Vertex {
     glm::vec3 position;
@@ -99,63 +100,97 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
     return frame;
 }
 
-const ForwardRenderer::GpuMesh& ForwardRenderer::upload(const std::shared_ptr<const MeshData>& mesh) {
+ForwardRenderer::CachedMesh& ForwardRenderer::cached(const std::shared_ptr<const MeshData>& mesh) {
     auto found = meshes_.find(mesh.get());
     if (found != meshes_.end()) {
-        return found->second.second;
+        return found->second;
     }
-    const bool hasNormals = mesh->normals.size() == mesh->positions.size();
-    std::vector<Vertex> vertices(mesh->positions.size());
+    CachedMesh entry{mesh, {}, std::nullopt};
+    for (const glm::vec3& p : mesh->positions) {
+        entry.bounds.extend(p);
+    }
+    return meshes_.emplace(mesh.get(), std::move(entry)).first->second;
+}
+
+const ForwardRenderer::GpuMesh& ForwardRenderer::upload(CachedMesh& entry) {
+    if (entry.gpu) {
+        return *entry.gpu;
+    }
+    const MeshData& mesh = *entry.mesh;
+    const ChunkedMesh chunked = splitIntoChunks(mesh, chunkLimits);
+    const bool hasNormals = mesh.normals.size() == mesh.positions.size();
+    std::vector<Vertex> vertices(chunked.sourceVertex.size());
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-        vertices[i] = {mesh->positions[i], hasNormals ? mesh->normals[i] : glm::vec3(0.0f)};
+        const std::uint32_t source = chunked.sourceVertex[i];
+        vertices[i] = {mesh.positions[source], hasNormals ? mesh.normals[source] : glm::vec3(0.0f)};
     }
-    GpuMesh gpu{gl::Buffer::fromSpan<Vertex>(vertices),
-                gl::Buffer::fromSpan<std::uint32_t>(mesh->indices),
-                {},
-                static_cast<GLsizei>(mesh->indices.size()),
-                hasNormals};
+    entry.gpu.emplace(GpuMesh{gl::Buffer::fromSpan<Vertex>(vertices),
+                              gl::Buffer::fromSpan<std::uint32_t>(chunked.indices),
+                              {},
+                              chunked.chunks});
+    GpuMesh& gpu = *entry.gpu;
     gpu.vertexArray.setVertexBuffer(0, gpu.vertices, sizeof(Vertex));
     gpu.vertexArray.setFloatAttribute(0, 0, 3, offsetof(Vertex, position));
     gpu.vertexArray.setFloatAttribute(1, 0, 3, offsetof(Vertex, normal));
     gpu.vertexArray.setIndexBuffer(gpu.indices);
-    return meshes_.emplace(mesh.get(), std::pair{mesh, std::move(gpu)}).first->second.second;
+    return gpu;
 }
 
-void ForwardRenderer::drawMeshes(const Scene& scene,
-                                 const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
+void ForwardRenderer::forEachMeshBounds(const Scene& scene,
+                                        const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) {
+    scene.forEach([&](EntityId id, const Entity& entity) {
+        if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->positions.empty()) {
+            return;
+        }
+        visit(id, scene.worldMatrix(id), cached(entity.mesh->mesh).bounds);
+    });
+}
+
+FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
+                                       const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
+    FrameStats stats;
+    std::vector<const MeshChunk*> visible;
     scene.forEach([&](EntityId id, const Entity& entity) {
         if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->indices.empty()) {
             return;
         }
         const glm::mat4 model = scene.worldMatrix(id);
-        if (!beforeDraw(id, model)) {
+        const GpuMesh& gpu = upload(cached(entity.mesh->mesh));
+        const glm::mat4 clipFromModel = cullViewProjection * model;
+        visible.clear();
+        for (const MeshChunk& chunk : gpu.chunks) {
+            if (!culling || intersectsClipVolume(chunk.bounds, clipFromModel)) {
+                visible.push_back(&chunk);
+            }
+        }
+        stats.culledChunks += gpu.chunks.size() - visible.size();
+        if (visible.empty() || !beforeDraw(id, model)) {
             return;
         }
-        const GpuMesh& gpu = upload(entity.mesh->mesh);
         gpu.vertexArray.bind();
-        glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+        for (const MeshChunk* chunk : visible) {
+            // The range tells the driver which vertices the draw reads: only the chunk's own.
+            glDrawRangeElements(GL_TRIANGLES, chunk->firstVertex, chunk->firstVertex + chunk->vertexCount - 1,
+                                static_cast<GLsizei>(chunk->indexCount), GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(std::uintptr_t{chunk->firstIndex} * sizeof(std::uint32_t)));
+            ++stats.drawCalls;
+            stats.triangles += chunk->indexCount / 3;
+        }
     });
+    return stats;
 }
 
-FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Module* const> modules) {
-    glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
-    glViewport(0, 0, frame.target.size.x, frame.target.size.y);
-    glEnable(GL_FRAMEBUFFER_SRGB);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glClearColor(environment.background.r, environment.background.g, environment.background.b, 1.0f);
-    glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
-
-    FrameStats stats;
+void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly,
+                              FrameStats& stats) {
     const ShaderVariantKey outputBits = output == OutputMode::WorldPosition ? worldPositionFlag_
                                         : output == OutputMode::WorldNormal ? worldNormalFlag_
                                                                             : 0;
     const ShaderVariantKey sceneBits = (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits;
-    drawMeshes(frame.scene, [&](EntityId id, const glm::mat4& model) {
+    const FrameStats drawn = drawMeshes(frame.scene, frame.viewProjection, [&](EntityId id, const glm::mat4& model) {
+        if (depthOnly) {
+            programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
+            return true;
+        }
         const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
         const DrawContext draw{frame, id, mesh, model};
         ShaderVariantKey key = sceneBits;
@@ -175,10 +210,40 @@ FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Mo
         for (Module* module : modules) {
             module->bindLightingResources(program, draw);
         }
-        ++stats.drawCalls;
-        stats.triangles += mesh.triangleCount();
         return true;
     });
+    if (!depthOnly) {
+        stats.drawCalls += drawn.drawCalls;
+        stats.triangles += drawn.triangles;
+        stats.culledChunks += drawn.culledChunks;
+    }
+}
+
+FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Module* const> modules) {
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
+    glViewport(0, 0, frame.target.size.x, frame.target.size.y);
+    glEnable(GL_FRAMEBUFFER_SRGB);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glClearColor(environment.background.r, environment.background.g, environment.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
+
+    FrameStats stats;
+    if (depthPrePass) {
+        programs_.get(kDepthOnlyProgram, 0).use();
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        drawLit(frame, modules, true, stats);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthFunc(GL_EQUAL);
+        glDepthMask(GL_FALSE);
+    }
+    drawLit(frame, modules, false, stats);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
     return stats;
 }
 

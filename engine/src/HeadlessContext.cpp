@@ -64,6 +64,7 @@ HeadlessContext::HeadlessContext(const ContextOptions& options) {
     if (options.debug) {
         GlDebug::install();
     }
+    applyAllocatorPolicy(options);
 }
 
 HeadlessContext::~HeadlessContext() {

@@ -40,6 +40,7 @@ WindowContext::WindowContext(const std::string& title, glm::ivec2 size, const Co
     if (options.debug) {
         GlDebug::install();
     }
+    applyAllocatorPolicy(options);
 }
 
 WindowContext::~WindowContext() {

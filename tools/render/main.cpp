@@ -30,6 +30,10 @@ struct Options {
     int frames = 5;
     std::vector<std::string> modules;
     std::optional<shadows::ShadowSettings> shadows;
+    std::uint32_t chunkTriangles = engine::ChunkLimits{}.maxTriangles;
+    bool culling = true;
+    bool depthPrePass = false;
+    bool tuneAllocator = true;
 };
 
 constexpr const char* kUsage = R"(usage: gs-render [options]
@@ -46,6 +50,10 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --shadow-size N  shadow map resolution, 64..16384               [2048]
   --depth-format F d16, d24 or d32f                               [d24]
   --debug-view V   none, texels, gradient, bias, visibility, shadow-map [none]
+  --chunk-triangles N  triangles per draw chunk, 1..16777216   [4096]
+  --no-culling     draw chunks outside the view volume too
+  --depth-prepass  lay down depth first, then shade with an EQUAL depth test
+  --allocator A    tuned (mallopt on CPU rasterisers) or default  [tuned]
   --help           this text)";
 
 [[noreturn]] void usageError(const std::string& message) {
@@ -91,6 +99,19 @@ Options parse(int argc, char** argv) {
             } else if (!technique) {
                 usageError("--technique: unknown technique '" + name + "'");
             }
+        } else if (arg == "--chunk-triangles") {
+            options.chunkTriangles =
+                static_cast<std::uint32_t>(cli::integerIn("--chunk-triangles", value(), 1, 1 << 24));
+        } else if (arg == "--no-culling") {
+            options.culling = false;
+        } else if (arg == "--depth-prepass") {
+            options.depthPrePass = true;
+        } else if (arg == "--allocator") {
+            const std::string name = value();
+            if (name != "tuned" && name != "default") {
+                usageError("--allocator: '" + name + "' is not tuned or default");
+            }
+            options.tuneAllocator = name == "tuned";
         } else if (arg == "--shadow-size" && options.shadows) {
             options.shadows->resolution = cli::integerIn("--shadow-size", value(), 64, 16384);
         } else if (arg == "--depth-format" && options.shadows) {
@@ -150,8 +171,13 @@ int main(int argc, char** argv) {
             std::cerr << "gs-render: " << path.string() << ": the scene has no camera\n";
             return 1;
         }
-        engine::HeadlessContext context;
+        engine::ContextOptions contextOptions;
+        contextOptions.tuneAllocatorForSoftwareRenderer = options.tuneAllocator;
+        engine::HeadlessContext context(contextOptions);
         engine::Engine engine;
+        engine.renderer().chunkLimits.maxTriangles = options.chunkTriangles;
+        engine.renderer().culling = options.culling;
+        engine.renderer().depthPrePass = options.depthPrePass;
         if (options.shadows) {
             engine.addModule(std::make_unique<shadows::ShadowModule>(*options.shadows));
         }
@@ -192,6 +218,11 @@ int main(int argc, char** argv) {
                << "  \"frameMillisecondsMax\": " << milliseconds.back() << ",\n"
                << "  \"drawCalls\": " << stats.drawCalls << ",\n"
                << "  \"triangles\": " << stats.triangles << ",\n"
+               << "  \"culledChunks\": " << stats.culledChunks << ",\n"
+               << "  \"chunkTriangles\": " << options.chunkTriangles << ",\n"
+               << "  \"culling\": " << (options.culling ? "true" : "false") << ",\n"
+               << "  \"depthPrePass\": " << (options.depthPrePass ? "true" : "false") << ",\n"
+               << "  \"allocatorTuned\": " << (context.allocatorTuned() ? "true" : "false") << ",\n"
                << "  \"programsCompiled\": " << engine.programs().compileCount() << ",\n"
                << "  \"shadowTechnique\": \""
                << (options.shadows ? shadows::toString(options.shadows->technique) : "none") << "\",\n"

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <engine/Bounds.h>
 #include <engine/FrameContext.h>
+#include <engine/MeshChunks.h>
 #include <engine/Module.h>
 #include <engine/ProgramCache.h>
 #include <engine/gl/Buffer.h>
@@ -9,14 +11,19 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 
 namespace engine {
 
 /// @brief Counts of the last lighting pass.
 struct FrameStats {
+    /// Chunks drawn (one draw call each) and their triangles; with a depth pre-pass, each is drawn twice but
+    /// counted once.
     std::size_t drawCalls = 0;
     std::size_t triangles = 0;
+    /// Chunks left out because their bounds lie outside the camera's view volume.
+    std::size_t culledChunks = 0;
     /// Milliseconds of the modules' pre-passes (e.g. shadow maps) and of the lighting pass; negative unless
     /// Engine::setPassTiming enabled timing (the method is Engine::passTiming()).
     double prePassMilliseconds = -1.0;
@@ -37,8 +44,9 @@ struct LightingEnvironment {
 
 /// @brief Forward Blinn-Phong renderer: one lighting pass, every light evaluated per fragment.
 ///
-/// Keeps GPU copies of meshes (uploaded on first draw) and a per-frame uniform block with the camera and
-/// up to kMaxLights lights.
+/// Keeps GPU copies of meshes (uploaded on first draw, split into chunks of bounded size whose bounds are
+/// computed once) and a per-frame uniform block with the camera and up to kMaxLights lights. Chunks outside
+/// the view volume of a pass are not drawn.
 class ForwardRenderer {
 public:
     static constexpr int kMaxLights = 8;
@@ -51,8 +59,16 @@ public:
     FrameContext beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
                             std::uint64_t frameIndex);
 
-    /// @brief Draws every mesh of `scene` with the currently bound program (see ModuleHost::drawMeshes).
-    void drawMeshes(const Scene& scene, const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw);
+    /// @brief Draws the chunks of every mesh of `scene` that intersect the clip volume of `cullViewProjection`
+    /// with the currently bound program (see ModuleHost::drawMeshes).
+    /// @return Chunks drawn and culled, triangles drawn.
+    FrameStats drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
+                          const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw);
+
+    /// @brief Calls `visit(entity, model, localBounds)` for every entity with a non-empty mesh; the bounds of
+    /// each mesh are computed once.
+    void forEachMeshBounds(const Scene& scene,
+                           const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit);
 
     /// @brief Clears `frame.target` and draws every mesh lit, letting `modules` choose variants and bind
     /// their resources per draw.
@@ -61,16 +77,30 @@ public:
     LightingEnvironment environment;
     /// Output of the lighting pass. Default Shaded.
     OutputMode output = OutputMode::Shaded;
+    /// Size of the chunks meshes are split into; applies to meshes uploaded afterwards. Default ChunkLimits{}.
+    ChunkLimits chunkLimits;
+    /// Leave out chunks outside each pass's view volume (exact: a culled chunk has no fragment). Default true.
+    bool culling = true;
+    /// Lay down depth first, then shade with an EQUAL depth test, so expensive lighting (shadow filtering)
+    /// runs once per visible pixel. Pays when overdraw is high and lighting costs more than a second
+    /// geometry pass (docs/RESULTS.md). Default false.
+    bool depthPrePass = false;
 
 private:
     struct GpuMesh {
         gl::Buffer vertices;
         gl::Buffer indices;
         gl::VertexArray vertexArray;
-        GLsizei indexCount = 0;
-        bool hasNormals = false;
+        std::vector<MeshChunk> chunks;
     };
-    const GpuMesh& upload(const std::shared_ptr<const MeshData>& mesh);
+    struct CachedMesh {
+        std::shared_ptr<const MeshData> mesh;
+        Aabb bounds;
+        std::optional<GpuMesh> gpu;
+    };
+    CachedMesh& cached(const std::shared_ptr<const MeshData>& mesh);
+    const GpuMesh& upload(CachedMesh& entry);
+    void drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly, FrameStats& stats);
 
     ProgramCache& programs_;
     ShaderVariantKey flatNormalsFlag_;
@@ -80,7 +110,7 @@ private:
     gl::Buffer frameBlock_;
     bool sceneHasSpotLights_ = false;
     // Keyed by the mesh pointer; the shared_ptr keeps the key alive as long as its GPU copy.
-    std::map<const MeshData*, std::pair<std::shared_ptr<const MeshData>, GpuMesh>> meshes_;
+    std::map<const MeshData*, CachedMesh> meshes_;
 };
 
 } // namespace engine

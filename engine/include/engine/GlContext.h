@@ -10,6 +10,11 @@ namespace engine {
 struct ContextOptions {
     /// Request a KHR_debug context so GL errors surface as GlError/log lines. Default true.
     bool debug = true;
+    /// On a CPU rasteriser, raise glibc's mmap and trim thresholds once at start-up (mallopt), so the driver's
+    /// large per-draw and per-frame buffers are reused instead of being mapped and unmapped every frame (a
+    /// third of a frame in page faults on a 121k-triangle model, docs/RESULTS.md). Process-wide; not applied
+    /// on GPUs. Default true.
+    bool tuneAllocatorForSoftwareRenderer = true;
 };
 
 /// @brief An OpenGL 4.5 core context; current on the creating thread after construction.
@@ -29,6 +34,15 @@ public:
     /// @brief True for CPU rasterisers (llvmpipe, softpipe, swrast), whose timer queries time submission
     /// only.
     [[nodiscard]] bool isSoftwareRenderer() const;
+    /// @brief Whether start-up changed the allocator's thresholds (ContextOptions).
+    [[nodiscard]] bool allocatorTuned() const { return allocatorTuned_; }
+
+protected:
+    /// @brief Applies ContextOptions::tuneAllocatorForSoftwareRenderer; call with the context current.
+    void applyAllocatorPolicy(const ContextOptions& options);
+
+private:
+    bool allocatorTuned_ = false;
 };
 
 } // namespace engine

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <engine/Bounds.h>
 #include <engine/FrameContext.h>
 #include <engine/ShaderLibrary.h>
 #include <engine/ShaderVariantKey.h>
@@ -17,7 +18,7 @@ class Program;
 }
 
 /// @brief Bumped whenever Module, ModuleHost, FrameContext or DrawContext change layout or meaning.
-inline constexpr std::uint32_t kModuleAbiVersion = 1;
+inline constexpr std::uint32_t kModuleAbiVersion = 2;
 
 /// @brief Identifies the compiler and C++ library ABI; a module built with another one is refused,
 /// because C++ classes cross the module boundary.
@@ -38,10 +39,17 @@ public:
     virtual ShaderVariantKey variantFlag(std::string_view defineName) = 0;
     /// @brief Reserves a texture unit no other module or the engine uses.
     virtual GLuint reserveTextureUnit() = 0;
-    /// @brief Draws every mesh of `scene`; `beforeDraw(entity, model)` sets per-draw state and may
-    /// return false to skip that mesh. Used by pre-passes (e.g. shadow maps) with their own program.
-    virtual void drawMeshes(const Scene& scene,
+    /// @brief Draws the chunks of every mesh of `scene` that intersect the clip volume of
+    /// `cullViewProjection` (the pass's own view-projection: culling is then exact); `beforeDraw(entity,
+    /// model)` runs once per mesh with a visible chunk, sets per-draw state and may return false to skip that
+    /// mesh. Used by pre-passes (e.g. shadow maps) with their own program.
+    virtual void drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
                             const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) = 0;
+    /// @brief Calls `visit(entity, model, localBounds)` for every entity with a mesh; each mesh's bounds are
+    /// computed once, so per-frame fits (e.g. a light's frustum) need not walk vertices.
+    virtual void forEachMeshBounds(
+        const Scene& scene,
+        const std::function<void(EntityId, const glm::mat4& model, const Aabb& localBounds)>& visit) = 0;
 };
 
 /// @brief A plugin that extends the renderer. The engine calls the hooks in this fixed order:

@@ -7,48 +7,7 @@
 
 namespace shadows {
 
-void Aabb::extend(const glm::vec3& point) {
-    min = glm::min(min, point);
-    max = glm::max(max, point);
-}
-
-std::array<glm::vec3, 8> Aabb::corners() const {
-    return {glm::vec3(min.x, min.y, min.z), glm::vec3(max.x, min.y, min.z), glm::vec3(min.x, max.y, min.z),
-            glm::vec3(max.x, max.y, min.z), glm::vec3(min.x, min.y, max.z), glm::vec3(max.x, min.y, max.z),
-            glm::vec3(min.x, max.y, max.z), glm::vec3(max.x, max.y, max.z)};
-}
-
-Aabb Aabb::transformed(const glm::mat4& matrix) const {
-    Aabb result;
-    if (empty()) {
-        return result;
-    }
-    for (const glm::vec3& corner : corners()) {
-        result.extend(glm::vec3(matrix * glm::vec4(corner, 1.0f)));
-    }
-    return result;
-}
-
 namespace {
-
-/// True unless all corners lie outside one clip plane (conservative frustum test).
-bool intersectsFrustum(const Aabb& box, const glm::mat4& viewProjection) {
-    std::array<glm::vec4, 8> clip;
-    const auto corners = box.corners();
-    for (std::size_t i = 0; i < 8; ++i) {
-        clip[i] = viewProjection * glm::vec4(corners[i], 1.0f);
-    }
-    for (int axis = 0; axis < 3; ++axis) {
-        for (const float sign : {-1.0f, 1.0f}) {
-            const bool allOutside = std::all_of(clip.begin(), clip.end(),
-                                                [&](const glm::vec4& c) { return sign * c[axis] > c.w; });
-            if (allOutside) {
-                return false;
-            }
-        }
-    }
-    return true;
-}
 
 /// A rotation whose -Z axis is `direction`, with any stable up vector.
 glm::mat4 lightRotation(const glm::vec3& direction) {
@@ -80,7 +39,7 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
     }
     Aabb receivers;
     for (const Aabb& box : boxes) {
-        if (!box.empty() && intersectsFrustum(box, cameraViewProjection)) {
+        if (!box.empty() && engine::intersectsClipVolume(box, cameraViewProjection)) {
             const Aabb light = box.transformed(result.view);
             receivers.extend(light.min);
             receivers.extend(light.max);

@@ -247,17 +247,10 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         lightingKey_ = lightingKey();
         dirty_ = false;
     }
-    // World bounds of every mesh: receivers for the fit, and casters.
+    // World bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
     std::vector<Aabb> boxes;
-    frame.scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
-        if (!entity.mesh || !entity.mesh->mesh) {
-            return;
-        }
-        Aabb local;
-        for (const glm::vec3& p : entity.mesh->mesh->positions) {
-            local.extend(p);
-        }
-        boxes.push_back(local.transformed(frame.scene.worldMatrix(id)));
+    host_->forEachMeshBounds(frame.scene, [&](engine::EntityId, const glm::mat4& model, const Aabb& local) {
+        boxes.push_back(local.transformed(model));
     });
 
     slotOfLight_.assign(engine::ForwardRenderer::kMaxLights, -1);
@@ -330,8 +323,10 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
             glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, glm::value_ptr(far));
         }
         glClear(GL_DEPTH_BUFFER_BIT);
-        program.set("uLightViewProjection", map->projection.projection * map->projection.view);
-        host_->drawMeshes(frame.scene, [&](engine::EntityId, const glm::mat4& model) {
+        const glm::mat4 lightViewProjection = map->projection.projection * map->projection.view;
+        program.set("uLightViewProjection", lightViewProjection);
+        // Culled to the light's own clip volume: casters outside it could not write a texel.
+        host_->drawMeshes(frame.scene, lightViewProjection, [&](engine::EntityId, const glm::mat4& model) {
             program.set("uModel", model);
             return true;
         });

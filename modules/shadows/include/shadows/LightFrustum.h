@@ -1,5 +1,7 @@
 #pragma once
 
+#include <engine/Bounds.h>
+
 #include <glm/glm.hpp>
 
 #include <array>
@@ -8,17 +10,8 @@
 
 namespace shadows {
 
-/// @brief World-space axis-aligned box.
-struct Aabb {
-    glm::vec3 min{std::numeric_limits<float>::max()};
-    glm::vec3 max{-std::numeric_limits<float>::max()};
-
-    [[nodiscard]] bool empty() const { return min.x > max.x; }
-    void extend(const glm::vec3& point);
-    [[nodiscard]] std::array<glm::vec3, 8> corners() const;
-    /// @brief The box around this box transformed by `matrix`.
-    [[nodiscard]] Aabb transformed(const glm::mat4& matrix) const;
-};
+/// @brief World-space axis-aligned box (the engine's).
+using Aabb = engine::Aabb;
 
 /// @brief The view and projection a shadow map is rendered with.
 struct LightProjection {

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <engine/Bounds.h>
+#include <engine/MeshData.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace engine {
+
+/// @brief Largest chunk a mesh is drawn in. Bounded draws keep software rasterisers' per-draw vertex buffers
+/// small (llvmpipe's would otherwise be allocated and unmapped every frame) and let chunks be culled one by one.
+struct ChunkLimits {
+    /// Triangles per chunk, >= 1. Default 4096.
+    std::uint32_t maxTriangles = 4096;
+};
+
+/// @brief A run of triangles drawn with one call; its vertices are contiguous in the chunked vertex order.
+struct MeshChunk {
+    std::uint32_t firstIndex = 0;
+    std::uint32_t indexCount = 0;
+    std::uint32_t firstVertex = 0;
+    std::uint32_t vertexCount = 0;
+    /// Bounds of the chunk's vertices in the mesh's local space.
+    Aabb bounds;
+};
+
+/// @brief A mesh reordered into spatially compact chunks.
+struct ChunkedMesh {
+    /// Vertex i of the chunked order is vertex `sourceVertex[i]` of the mesh (vertices shared by two chunks
+    /// appear once in each).
+    std::vector<std::uint32_t> sourceVertex;
+    /// Three per triangle, into the chunked vertex order.
+    std::vector<std::uint32_t> indices;
+    std::vector<MeshChunk> chunks;
+    /// Bounds of every position of the mesh, local space.
+    Aabb bounds;
+};
+
+/// @brief Splits `mesh` into chunks of at most `limits.maxTriangles` triangles by recursive median splits of
+/// the triangle centroids along the longest axis, so that each chunk's bounds are tight for culling. Triangles
+/// keep their original order inside a chunk; a mesh that fits one chunk keeps its triangle order entirely.
+/// Indices out of range are the caller's to reject (the loaders do).
+[[nodiscard]] ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits = {});
+
+} // namespace engine
