@@ -136,6 +136,14 @@ const ForwardRenderer::GpuMesh& ForwardRenderer::upload(CachedMesh& entry) {
     return gpu;
 }
 
+std::size_t ForwardRenderer::meshBytes() const {
+    std::size_t bytes = 0;
+    for (const auto& [key, entry] : meshes_) {
+        bytes += entry.gpu ? entry.gpu->vertices.size() + entry.gpu->indices.size() : 0;
+    }
+    return bytes;
+}
+
 void ForwardRenderer::forEachMeshBounds(const Scene& scene,
                                         const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) {
     scene.forEach([&](EntityId id, const Entity& entity) {

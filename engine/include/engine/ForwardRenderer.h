@@ -74,6 +74,9 @@ public:
     /// their resources per draw.
     FrameStats lightingPass(const FrameContext& frame, std::span<Module* const> modules);
 
+    /// @brief GPU bytes of the vertex and index buffers of every mesh uploaded so far.
+    [[nodiscard]] std::size_t meshBytes() const;
+
     LightingEnvironment environment;
     /// Output of the lighting pass. Default Shaded.
     OutputMode output = OutputMode::Shaded;

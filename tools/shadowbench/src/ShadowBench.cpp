@@ -1,3 +1,4 @@
+#include <shadowbench/PeerRun.h>
 #include <shadowbench/ShadowBench.h>
 
 #include <engine/Engine.h>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -32,6 +34,21 @@ std::vector<glm::vec4> renderFloat(engine::Engine& engine, const engine::Scene& 
 PassTiming summarise(std::vector<double> samples) {
     std::sort(samples.begin(), samples.end());
     return {samples[samples.size() / 2], samples.front(), samples.back()};
+}
+
+/// Whole frames after one warm-up frame: glFinish + steady clock around each, like gs-render.
+PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
+                      engine::RenderTarget& target, int frames) {
+    engine.renderFrame(scene, camera, target);
+    glFinish();
+    std::vector<double> times;
+    for (int frame = 0; frame < std::max(frames, 1); ++frame) {
+        const auto start = std::chrono::steady_clock::now();
+        engine.renderFrame(scene, camera, target);
+        glFinish();
+        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    return summarise(times);
 }
 
 double median(std::vector<float> values) {
@@ -131,6 +148,7 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
         lightingTimes.push_back(stats.lightingMilliseconds);
     }
     engine.setPassTiming(std::nullopt);
+    result.frame = timeFrames(engine, scene.scene_, scene.camera_, shaded, options_.frames);
     result.shadowPass = summarise(shadowTimes);
     result.lightingPass = summarise(lightingTimes);
     result.shadowBytes = module.stats().bytes;
@@ -169,11 +187,9 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
     auto& module = static_cast<shadows::ShadowModule&>(
         engine.addModule(std::make_unique<shadows::ShadowModule>(visibilityOnly)));
     const auto pixels = renderFloat(engine, scene.scene_, scene.camera_, options_.size);
-    Accuracy accuracy;
-    accuracy.truth = scene.truth_;
-    accuracy.visibility.resize(pixels.size());
+    std::vector<float> visibility(pixels.size());
     for (std::size_t i = 0; i < pixels.size(); ++i) {
-        accuracy.visibility[i] = pixels[i].x;
+        visibility[i] = pixels[i].x;
     }
     // The band is a number of shadow texels; convert to pixels with the median texel and pixel footprints.
     float texelWorld = 0.0f;
@@ -190,14 +206,70 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
             texelWorld *= static_cast<float>(median(distances));
         }
     }
-    accuracy.bandPixels = scene.pixelWorldSize_ > 0.0f
-                              ? std::clamp(static_cast<int>(std::ceil(options_.bandTexels * texelWorld /
-                                                                      scene.pixelWorldSize_)),
-                                           1, 32)
-                              : 1;
+    const int bandPixels = scene.pixelWorldSize_ > 0.0f
+                               ? std::clamp(static_cast<int>(std::ceil(options_.bandTexels * texelWorld /
+                                                                       scene.pixelWorldSize_)),
+                                            1, 32)
+                               : 1;
+    return measureVisibility(scene, std::move(visibility), bandPixels);
+}
+
+Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<float> visibility,
+                                        int bandPixels) const {
+    if (visibility.size() != scene.truth_.size()) {
+        throw engine::Error("shadowbench: a visibility image of " + std::to_string(visibility.size()) +
+                            " pixels for scene '" + scene.name() + "' of " + std::to_string(scene.truth_.size()));
+    }
+    Accuracy accuracy;
+    accuracy.truth = scene.truth_;
+    accuracy.visibility = std::move(visibility);
+    accuracy.bandPixels = bandPixels;
     accuracy.classes = classify(options_.size, scene.truth_, scene.receivers_, accuracy.bandPixels);
     accuracy.metrics = computeMetrics(accuracy.classes, scene.truth_, accuracy.visibility, scene.concave_);
     return accuracy;
+}
+
+SceneCost ShadowBench::measureCost(const BenchScene& scene) const {
+    SceneCost cost;
+    cost.scene = scene.name();
+    engine::Engine engine;
+    engine::RenderTarget target(options_.size);
+    const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, target);
+    cost.drawCalls = stats.drawCalls;
+    cost.culledChunks = stats.culledChunks;
+    cost.meshBytes = engine.renderer().meshBytes();
+    scene.scene_.forEach([&](engine::EntityId, const engine::Entity& entity) {
+        cost.triangles += entity.mesh && entity.mesh->mesh ? entity.mesh->mesh->triangleCount() : 0;
+    });
+    cost.unshadowedFrame = timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames);
+    return cost;
+}
+
+BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run, int bandPixels) const {
+    BenchResult result;
+    result.scene = scene.name();
+    result.config.label = "osg-" + run.technique;
+    result.config.settings.resolution = run.mapSize;
+    result.peerClass = run.osgClass;
+    result.frame = {run.shadowed.median, run.shadowed.min, run.shadowed.max};
+    result.shadowPass = {-1.0, -1.0, -1.0}; // the peer times whole frames only
+    result.lightingPass = {-1.0, -1.0, -1.0};
+    std::vector<float> visibility = run.visibility;
+    for (std::size_t i = 0; i < visibility.size(); ++i) {
+        if (visibility[i] < 0.0f) {
+            result.peerUnlitReceivers += scene.receivers_[i] != 0;
+            visibility[i] = 1.0f;
+        }
+    }
+    const Accuracy accuracy = measureVisibility(scene, std::move(visibility), bandPixels);
+    result.metrics = accuracy.metrics;
+    result.bandPixels = accuracy.bandPixels;
+    const std::filesystem::path folder = options_.imageFolder / scene.name();
+    engine::writePng(folder / (result.config.label + "-classes.png"),
+                     classificationImage(options_.size, accuracy.classes, accuracy.visibility));
+    engine::writePng(folder / (result.config.label + "-error.png"),
+                     errorHeatMap(options_.size, accuracy.classes, accuracy.truth, accuracy.visibility));
+    return result;
 }
 
 shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, const std::string& source) {
@@ -235,7 +307,7 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
     csv << "scene,label,technique,layout,taps,radius,resolution,format,acne_rate,leak_rate,darkening,"
            "concave_darkening,mae,rmse,receivers,lit,shadowed,band,concave,band_pixels,shadow_ms_median,"
            "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
-           "full_kernel_fraction\n";
+           "full_kernel_fraction,frame_ms_median,peer\n";
     for (const BenchResult& r : results) {
         const shadows::ShadowSettings& s = r.config.settings;
         const ShadowMetrics& m = r.metrics;
@@ -247,13 +319,13 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << m.band << ',' << m.concave << ',' << r.bandPixels << ',' << r.shadowPass.median << ','
             << r.shadowPass.min << ',' << r.shadowPass.max << ',' << r.lightingPass.median << ','
             << r.lightingPass.min << ',' << r.lightingPass.max << ',' << r.shadowBytes << ','
-            << r.fullKernelFraction << '\n';
+            << r.fullKernelFraction << ',' << r.frame.median << ',' << r.peerClass << '\n';
     }
     return csv.str();
 }
 
-std::string resultsJson(const std::vector<BenchResult>& results, const std::string& renderer,
-                        const std::string& glVersion, engine::TimingMethod method,
+std::string resultsJson(const std::vector<BenchResult>& results, const std::vector<SceneCost>& costs,
+                        const std::string& renderer, const std::string& glVersion, engine::TimingMethod method,
                         const BenchOptions& options) {
     nlohmann::json document;
     document["renderer"] = renderer;
@@ -290,11 +362,33 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::stri
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
              {"lightingPassMs",
               {{"median", r.lightingPass.median}, {"min", r.lightingPass.min}, {"max", r.lightingPass.max}}},
+             {"frameMs", {{"median", r.frame.median}, {"min", r.frame.min}, {"max", r.frame.max}}},
+             {"peer", r.peerClass.empty() ? nlohmann::json() : nlohmann::json(r.peerClass)},
+             {"peerUnlitReceivers", r.peerUnlitReceivers},
              {"shadowBytes", r.shadowBytes},
              {"fullKernelFraction", r.fullKernelFraction},
              {"image", r.shadedImage.string()}});
     }
     document["results"] = list;
+    nlohmann::json sceneCosts = nlohmann::json::array();
+    for (const SceneCost& c : costs) {
+        sceneCosts.push_back({{"scene", c.scene},
+                              {"triangles", c.triangles},
+                              {"drawCalls", c.drawCalls},
+                              {"culledChunks", c.culledChunks},
+                              {"meshBytes", c.meshBytes},
+                              {"unshadowedFrameMs",
+                               {{"median", c.unshadowedFrame.median},
+                                {"min", c.unshadowedFrame.min},
+                                {"max", c.unshadowedFrame.max}}},
+                              {"peerUnshadowedFrameMs",
+                               c.peerUnshadowedFrame.median < 0.0
+                                   ? nlohmann::json()
+                                   : nlohmann::json({{"median", c.peerUnshadowedFrame.median},
+                                                     {"min", c.peerUnshadowedFrame.min},
+                                                     {"max", c.peerUnshadowedFrame.max}})}});
+    }
+    document["scenes"] = sceneCosts;
     return document.dump(2) + "\n";
 }
 

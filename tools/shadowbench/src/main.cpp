@@ -1,5 +1,6 @@
 // gs-shadowbench: sweeps shadow techniques x taps x resolutions x depth formats x scenes, measures each
 // against ray-traced ground truth (Embree) and times its passes, and writes CSV, JSON and images.
+#include <shadowbench/PeerRun.h>
 #include <shadowbench/ShadowBench.h>
 
 #include <cli/OptionValues.h>
@@ -31,7 +32,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --band TEXELS         boundary band half-width around true shadow edges   [2]
   --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
   --out DIR             where results.csv, results.json and images go       [bench]
-  --content DIR         content folder                                      [the repository's content/])";
+  --content DIR         content folder                                      [the repository's content/]
+  --peer DIR            add the OpenSceneGraph peer's runs found in DIR/<scene>/<technique>.json and
+                        .visibility.pfm (tools/osgpeer; vdsm, sm, lispsm, ssm) as rows "osg-<technique>")";
 
 [[noreturn]] void usageError(const std::string& message) {
     std::cerr << "gs-shadowbench: " << message << "\n" << kUsage << "\n";
@@ -58,6 +61,7 @@ struct Options {
     std::vector<shadows::DepthFormat> formats{shadows::DepthFormat::D24};
     std::vector<shadowbench::BenchConfig> extra;
     std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    std::optional<std::filesystem::path> peerFolder;
     shadowbench::BenchOptions bench;
 };
 
@@ -141,6 +145,8 @@ Options parse(int argc, char** argv) {
             options.bench.imageFolder = value();
         } else if (arg == "--content") {
             options.contentFolder = value();
+        } else if (arg == "--peer") {
+            options.peerFolder = value();
         } else {
             usageError("unknown option '" + arg + "'");
         }
@@ -219,6 +225,7 @@ int main(int argc, char** argv) {
         const std::vector<shadowbench::BenchConfig> configs = configurations(options);
         const std::size_t total = configs.size() * options.scenes.size();
         std::vector<shadowbench::BenchResult> results;
+        std::vector<shadowbench::SceneCost> costs;
         std::cout << "gs-shadowbench: " << total << " runs on " << context.renderer() << ", timing by "
                   << engine::PassTimer::describe(bench.timingMethod()) << "\n";
         for (const std::string& sceneName : options.scenes) {
@@ -237,12 +244,39 @@ int main(int argc, char** argv) {
                           << results.back().lightingPass.median << " ms\n"
                           << std::flush;
             }
+            shadowbench::SceneCost cost = bench.measureCost(*scene);
+            if (options.peerFolder) {
+                for (const std::string& technique : shadowbench::peerTechniques()) {
+                    const auto run = shadowbench::loadPeerRun(*options.peerFolder, scene->name(), technique,
+                                                              options.bench.size);
+                    if (!run) {
+                        std::cout << scene->name() << " osg-" << technique << ": no peer run in "
+                                  << options.peerFolder->string() << "\n";
+                        continue;
+                    }
+                    shadows::ShadowSettings ours;
+                    ours.resolution = run->mapSize;
+                    results.push_back(bench.peerResult(*scene, *run, bench.measure(*scene, ours).bandPixels));
+                    if (technique == "vdsm") {
+                        cost.peerUnshadowedFrame = {run->unshadowed.median, run->unshadowed.min, run->unshadowed.max};
+                    }
+                    const shadowbench::ShadowMetrics& m = results.back().metrics;
+                    std::cout << scene->name() << " osg-" << technique << " (" << run->osgClass << "): acne "
+                              << std::setprecision(3) << m.acneRate << ", leak " << m.leakRate << ", MAE "
+                              << m.meanAbsoluteError << ", frame " << run->shadowed.median << " ms"
+                              << ", " << results.back().peerUnlitReceivers << " receivers unlit in its frame"
+                              << "\n";
+                }
+            }
+            std::cout << scene->name() << ": " << cost.triangles << " triangles, " << cost.drawCalls
+                      << " draws, unshadowed frame " << cost.unshadowedFrame.median << " ms\n";
+            costs.push_back(cost);
             engine::writePng(options.bench.imageFolder / scene->name() / "side-by-side.png",
                              sideBySide(shaded));
         }
         engine::writeTextFile(options.bench.imageFolder / "results.csv", shadowbench::resultsCsv(results));
         engine::writeTextFile(options.bench.imageFolder / "results.json",
-                              shadowbench::resultsJson(results, context.renderer(), context.version(),
+                              shadowbench::resultsJson(results, costs, context.renderer(), context.version(),
                                                        bench.timingMethod(), options.bench));
         std::cout << "wrote " << (options.bench.imageFolder / "results.csv").string()
                   << " and results.json\n";

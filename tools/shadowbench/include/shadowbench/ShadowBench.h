@@ -37,6 +37,13 @@ struct BenchResult {
     ShadowMetrics metrics;
     PassTiming shadowPass;
     PassTiming lightingPass;
+    /// Whole frames (glFinish + steady clock around Engine::renderFrame), as an application would see them.
+    PassTiming frame;
+    /// Empty for our techniques; the osgShadow class for rows of the OpenSceneGraph peer (PeerRun).
+    std::string peerClass;
+    /// Peer rows: receivers the peer left unlit in its unshadowed frame (a silhouette a pixel off); counted
+    /// as visibility 1.
+    std::size_t peerUnlitReceivers = 0;
     std::size_t shadowBytes = 0;
     int bandPixels = 0;
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
@@ -45,6 +52,20 @@ struct BenchResult {
     std::filesystem::path shadedImage;
     /// The shaded frame (also written to shadedImage), for side-by-side sheets.
     engine::Image shaded;
+};
+
+/// @brief What drawing a scene costs without shadows: its size, our draw calls and unshadowed frame time.
+struct SceneCost {
+    std::string scene;
+    std::size_t triangles = 0;
+    /// Chunks drawn by the lighting pass, and those culled against the view.
+    std::size_t drawCalls = 0;
+    std::size_t culledChunks = 0;
+    /// GPU bytes of the scene's vertex and index buffers.
+    std::size_t meshBytes = 0;
+    PassTiming unshadowedFrame;
+    /// The OpenSceneGraph peer's unshadowed frame (from its vdsm run), when it ran; negative medians otherwise.
+    PassTiming peerUnshadowedFrame{-1.0, -1.0, -1.0};
 };
 
 /// @brief One technique's visibility against ground truth over one view.
@@ -114,6 +135,18 @@ public:
     /// @brief Accuracy of `settings` against the scene's ground truth (no timing, nothing written).
     [[nodiscard]] Accuracy measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const;
 
+    /// @brief Accuracy of a visibility image made elsewhere (rows top to bottom, the scene's size), with a
+    /// boundary band of `bandPixels`.
+    [[nodiscard]] Accuracy measureVisibility(const BenchScene& scene, std::vector<float> visibility,
+                                             int bandPixels) const;
+
+    /// @brief The scene drawn without shadows: counts and whole-frame times.
+    [[nodiscard]] SceneCost measureCost(const BenchScene& scene) const;
+
+    /// @brief A row for an OpenSceneGraph peer run: its accuracy against this scene's truth and its frame
+    /// times; images written like ours. `bandPixels` should be ours at the same map size.
+    BenchResult peerResult(const BenchScene& scene, const struct PeerRun& run, int bandPixels) const;
+
     [[nodiscard]] engine::TimingMethod timingMethod() const { return method_; }
     [[nodiscard]] const BenchOptions& options() const { return options_; }
 
@@ -128,9 +161,9 @@ shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, 
 
 /// @brief Results as CSV, one row per configuration and scene, with a header line.
 std::string resultsCsv(const std::vector<BenchResult>& results);
-/// @brief Results as JSON, with the renderer and the timing method.
-std::string resultsJson(const std::vector<BenchResult>& results, const std::string& renderer,
-                        const std::string& glVersion, engine::TimingMethod method,
+/// @brief Results as JSON, with the renderer, the timing method and each scene's cost.
+std::string resultsJson(const std::vector<BenchResult>& results, const std::vector<SceneCost>& costs,
+                        const std::string& renderer, const std::string& glVersion, engine::TimingMethod method,
                         const BenchOptions& options);
 
 } // namespace shadowbench
