@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 work=${1:-out/results}
 bash tools/setup.sh
 cmake --preset default >/dev/null
-cmake --build --preset default --target gs-shadowbench
+cmake --build --preset default --target gs-shadowbench gs-corpus gs-osgshadow
 bench=./build/bin/gs-shadowbench
 rm -rf "$work"
 
@@ -36,6 +36,34 @@ rm -rf "$work"
     --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,constantBias=0.12,resolution=1024" \
     --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,constantBias=0.12,resolution=1024" \
     --out "$work/filtered"
+
+# 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
+#    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
+bash tools/corpus.sh
+corpus=(suzanne human-subdivided fzk-haus at-at jeep duck wuson epileptic dwarf cylinder-engine terrain)
+peer() { # peer SCENE_FILE TECHNIQUE...: the peer's runs into $work/osg/<scene stem>/
+    local scene=$1 name
+    name=$(basename "${scene%.*}")
+    shift
+    for technique in "$@"; do
+        xvfb-run -a -s "-screen 0 1280x1024x24" ./build/bin/gs-osgshadow --scene "$scene" --technique "$technique" \
+            --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$work/osg/$name/$technique"
+    done
+}
+for model in "${corpus[@]}"; do
+    peer "corpus/$model.glb" vdsm sm lispsm ssm
+done
+"$bench" $(printf -- '--scene %s ' "${corpus[@]}") --taps 4 --resolutions 2048 --frames 5 --peer "$work/osg" \
+    --out "$work/real"
+
+# 5. Frame-time scaling from 10k to 1M triangles (generated hills): ours without shadows and with gsm, the peer
+#    without shadows and with ViewDependentShadowMap.
+sweep=()
+for triangles in 10000 100000 1000000; do
+    peer "corpus/sweep/hills-$triangles.glb" vdsm
+    sweep+=(--scene "corpus/sweep/hills-$triangles.glb")
+done
+"$bench" "${sweep[@]}" --techniques gsm --resolutions 2048 --frames 5 --peer "$work/osg" --out "$work/scaling"
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results

@@ -26,7 +26,7 @@ void main() {
         normal = -normal;
     }
     vec3 color = gsAmbient.rgb * uBaseColor;
-    for (int lightIndex = 0; lightIndex < gsLightCount.x; ++lightIndex) {
+    for (int lightIndex = 0; lightIndex < GS_LIGHT_COUNT; ++lightIndex) {
         vec3 toLight;
         float attenuation;
         gsLightIncidence(lightIndex, vWorldPosition, toLight, attenuation);

@@ -3,6 +3,30 @@
 #define GS_MAX_LIGHTS 8
 #endif
 
+// The number of lights is part of the variant (GS_LIGHT_COUNT_BIT0..3, binary), so lighting loops have a
+// constant trip count: llvmpipe runs a dynamically bounded loop over a dynamically indexed block 2-3x slower.
+#ifdef GS_LIGHT_COUNT_BIT0
+#define GS_LIGHT_COUNT_1 1
+#else
+#define GS_LIGHT_COUNT_1 0
+#endif
+#ifdef GS_LIGHT_COUNT_BIT1
+#define GS_LIGHT_COUNT_2 2
+#else
+#define GS_LIGHT_COUNT_2 0
+#endif
+#ifdef GS_LIGHT_COUNT_BIT2
+#define GS_LIGHT_COUNT_4 4
+#else
+#define GS_LIGHT_COUNT_4 0
+#endif
+#ifdef GS_LIGHT_COUNT_BIT3
+#define GS_LIGHT_COUNT_8 8
+#else
+#define GS_LIGHT_COUNT_8 0
+#endif
+#define GS_LIGHT_COUNT (GS_LIGHT_COUNT_1 + GS_LIGHT_COUNT_2 + GS_LIGHT_COUNT_4 + GS_LIGHT_COUNT_8)
+
 const int GS_LIGHT_DIRECTIONAL = 0;
 const int GS_LIGHT_SPOT = 1;
 

@@ -41,7 +41,11 @@ ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& prog
       spotLightsFlag_(layout.flag("GS_HAS_SPOT_LIGHTS")),
       worldPositionFlag_(layout.flag("GS_OUTPUT_WORLD_POSITION")),
       worldNormalFlag_(layout.flag("GS_OUTPUT_WORLD_NORMAL")),
-      frameBlock_(sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT) {}
+      lightCountFlags_{layout.flag("GS_LIGHT_COUNT_BIT0"), layout.flag("GS_LIGHT_COUNT_BIT1"),
+                       layout.flag("GS_LIGHT_COUNT_BIT2"), layout.flag("GS_LIGHT_COUNT_BIT3")},
+      frameBlock_(sizeof(FrameBlock), nullptr, GL_DYNAMIC_STORAGE_BIT) {
+    static_assert(kMaxLights < 16, "the light count must fit the four GS_LIGHT_COUNT_BIT flags");
+}
 
 FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
                                          std::uint64_t frameIndex) {
@@ -96,6 +100,10 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
                   << kMaxLights << " are drawn\n";
     }
     block.lightCount = glm::ivec4(static_cast<int>(frame.lights.size()), 0, 0, 0);
+    lightCountBits_ = 0;
+    for (std::size_t bit = 0; bit < lightCountFlags_.size(); ++bit) {
+        lightCountBits_ |= (frame.lights.size() >> bit) & 1u ? lightCountFlags_[bit] : 0;
+    }
     frameBlock_.update(0, sizeof block, &block);
     return frame;
 }
@@ -193,7 +201,7 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
     const ShaderVariantKey outputBits = output == OutputMode::WorldPosition ? worldPositionFlag_
                                         : output == OutputMode::WorldNormal ? worldNormalFlag_
                                                                             : 0;
-    const ShaderVariantKey sceneBits = (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits;
+    const ShaderVariantKey sceneBits = (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits | lightCountBits_;
     const FrameStats drawn = drawMeshes(frame.scene, frame.viewProjection, [&](EntityId id, const glm::mat4& model) {
         if (depthOnly) {
             programs_.get(kDepthOnlyProgram, 0).set("uModel", model);

@@ -8,6 +8,7 @@
 #include <engine/gl/Buffer.h>
 #include <engine/gl/VertexArray.h>
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -110,6 +111,8 @@ private:
     ShaderVariantKey spotLightsFlag_;
     ShaderVariantKey worldPositionFlag_;
     ShaderVariantKey worldNormalFlag_;
+    ShaderVariantKey lightCountBits_ = 0; // the frame's light count in the GS_LIGHT_COUNT_BIT flags
+    std::array<ShaderVariantKey, 4> lightCountFlags_{};
     gl::Buffer frameBlock_;
     bool sceneHasSpotLights_ = false;
     // Keyed by the mesh pointer; the shared_ptr keeps the key alive as long as its GPU copy.
