@@ -7,7 +7,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-corpus}
-models=/usr/share/assimp/models
+models=${GS_ASSIMP_MODELS:-/usr/share/assimp/models}
 corpusTool=${GS_CORPUS_TOOL:-./build/bin/gs-corpus}
 [[ -x $corpusTool ]] || { echo "corpus: $corpusTool is not built (cmake --build --preset default --target gs-corpus)" >&2; exit 1; }
 mkdir -p "$out"

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 work=${1:-out/results}
 bash tools/setup.sh
 cmake --preset default >/dev/null
-cmake --build --preset default --target gs-shadowbench gs-corpus gs-osgshadow
+cmake --build --preset default --target gs-shadowbench gs-render gs-corpus gs-osgshadow
 bench=./build/bin/gs-shadowbench
 rm -rf "$work"
 
@@ -64,6 +64,23 @@ for triangles in 10000 100000 1000000; do
     sweep+=(--scene "corpus/sweep/hills-$triangles.glb")
 done
 "$bench" "${sweep[@]}" --techniques gsm --resolutions 2048 --frames 5 --peer "$work/osg" --out "$work/scaling"
+
+# 6. What the renderer's options do, side by side in one run (gs-render, whole frames): the depth pre-pass, glibc's
+#    default allocator thresholds instead of the tuned ones, and meshes drawn whole instead of in chunks.
+for model in knob fzk-haus cylinder-engine suzanne terrain; do
+    for technique in none gsm pcf-gsm-average; do
+        for variant in plain prepass default-allocator unchunked; do
+            case $variant in
+                plain) options=() ;;
+                prepass) options=(--depth-prepass) ;;
+                default-allocator) options=(--allocator default) ;;
+                unchunked) options=(--chunk-triangles 16777216) ;;
+            esac
+            ./build/bin/gs-render --scene "$model" --technique "$technique" --size 640x480 --frames 9 \
+                "${options[@]}" --out "$work/engine/$model/$technique-$variant" >/dev/null
+        done
+    done
+done
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results

@@ -10,6 +10,7 @@ packages=(
     libosd-dev libopenmesh-dev libtinygltf-dev libembree-dev
     libgtest-dev libbenchmark-dev libimgui-dev xvfb python3 python3-matplotlib nlohmann-json3-dev
     libopenscenegraph-dev # optional: gs-osgshadow, the osgShadow peer (tools/osgpeer)
+    assimp-utils assimp-testmodels # the real-model corpus (tools/corpus.sh)
     clang libclang-rt-14-dev llvm # sanitizer build and libFuzzer targets; llvm gives llvm-symbolizer
 )
 

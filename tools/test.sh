@@ -17,6 +17,7 @@ stage() { # stage NAME COMMAND...: runs the command, failing the script if it fa
 
 bash tools/setup.sh
 stage "ci: configure + build" eval 'cmake --preset ci && cmake --build --preset ci'
+stage "corpus (tools/corpus.sh)" env GS_CORPUS_TOOL=./build-ci/bin/gs-corpus bash tools/corpus.sh
 stage "ci: tests" ctest --preset ci
 stage "asan: configure + build" eval 'cmake --preset asan && cmake --build --preset asan'
 stage "asan: tests" ctest --preset asan

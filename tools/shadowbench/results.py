@@ -236,7 +236,28 @@ def real_models(real, scaling):
                      f"{peer['median']:.1f} ms | {frame_ms(gsm):.1f} ms | {frame_ms(vdsm):.1f} ms | "
                      f"{frame_ms(gsm) / frame_ms(vdsm):.2f}x |" if vdsm and peer else f"| {cost['triangles']} | – |")
     out.append("\n".join(scale) + "\n")
+    engine_options()
     out.extend(model_sections)
+
+
+def engine_options():
+    folder = work / "engine"
+    out.append("### Renderer options\n")
+    out.append("`gs-render` whole frames (median of 9, 640x480) per model and technique with the defaults (chunks of "
+               "4096 triangles, culling, tuned allocator, no pre-pass) and the ratio of each alternative to it, all "
+               "in one run: `prepass` lays down depth first and shades with an EQUAL test; `default allocator` "
+               "keeps glibc's mmap/trim thresholds; `unchunked` draws each mesh whole (culling then has nothing to "
+               "cull within a mesh).\n")
+    rows = ["| model | technique | defaults | prepass | default allocator | unchunked |", "| --- | --- | --- | --- | --- | --- |"]
+    for model in sorted(p.name for p in folder.iterdir()):
+        for technique in ("none", "gsm", "pcf-gsm-average"):
+            def ms(variant):
+                report = folder / model / f"{technique}-{variant}" / "report.json"
+                return json.loads(report.read_text())["frameMillisecondsMedian"]
+            base = ms("plain")
+            rows.append(f"| {model} | {technique} | {base:.1f} ms | " +
+                        " | ".join(f"{ms(v) / base:.2f}x" for v in ("prepass", "default-allocator", "unchunked")) + " |")
+    out.append("\n".join(rows) + "\n")
 
 
 model_sections = []
