@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
+
 namespace {
 
 struct Options {
@@ -135,6 +137,13 @@ Options parse(int argc, char** argv) {
     return options;
 }
 
+/// Minor page faults of the process so far: memory the allocator handed back and touches again.
+long minorPageFaults() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_minflt;
+}
+
 std::string jsonEscape(const std::string& text) {
     std::string out;
     for (char c : text) {
@@ -190,6 +199,7 @@ int main(int argc, char** argv) {
             engine.renderFrame(scene, *camera, target); // warm-up: uploads and compiles
         glFinish();
         std::vector<double> milliseconds;
+        const long faultsBefore = minorPageFaults();
         for (int frame = 0; frame < options.frames; ++frame) {
             const auto start = std::chrono::steady_clock::now();
             stats = engine.renderFrame(scene, *camera, target);
@@ -197,6 +207,8 @@ int main(int argc, char** argv) {
             milliseconds.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
+        const double faultsPerFrame =
+            static_cast<double>(minorPageFaults() - faultsBefore) / static_cast<double>(options.frames);
         std::sort(milliseconds.begin(), milliseconds.end());
         const double median = milliseconds[milliseconds.size() / 2];
 
@@ -219,6 +231,7 @@ int main(int argc, char** argv) {
                << "  \"drawCalls\": " << stats.drawCalls << ",\n"
                << "  \"triangles\": " << stats.triangles << ",\n"
                << "  \"culledChunks\": " << stats.culledChunks << ",\n"
+               << "  \"pageFaultsPerFrame\": " << faultsPerFrame << ",\n"
                << "  \"chunkTriangles\": " << options.chunkTriangles << ",\n"
                << "  \"culling\": " << (options.culling ? "true" : "false") << ",\n"
                << "  \"depthPrePass\": " << (options.depthPrePass ? "true" : "false") << ",\n"

@@ -248,15 +248,17 @@ def engine_options():
                "in one run: `prepass` lays down depth first and shades with an EQUAL test; `default allocator` "
                "keeps glibc's mmap/trim thresholds; `unchunked` draws each mesh whole (culling then has nothing to "
                "cull within a mesh).\n")
-    rows = ["| model | technique | defaults | prepass | default allocator | unchunked |", "| --- | --- | --- | --- | --- | --- |"]
+    rows = ["| model | technique | defaults | prepass | default allocator | unchunked | page faults per frame: defaults / default allocator |",
+            "| --- | --- | --- | --- | --- | --- | --- |"]
     for model in sorted(p.name for p in folder.iterdir()):
         for technique in ("none", "gsm", "pcf-gsm-average"):
-            def ms(variant):
-                report = folder / model / f"{technique}-{variant}" / "report.json"
-                return json.loads(report.read_text())["frameMillisecondsMedian"]
-            base = ms("plain")
+            def report(variant):
+                return json.loads((folder / model / f"{technique}-{variant}" / "report.json").read_text())
+            base = report("plain")["frameMillisecondsMedian"]
             rows.append(f"| {model} | {technique} | {base:.1f} ms | " +
-                        " | ".join(f"{ms(v) / base:.2f}x" for v in ("prepass", "default-allocator", "unchunked")) + " |")
+                        " | ".join(f"{report(v)['frameMillisecondsMedian'] / base:.2f}x"
+                                   for v in ("prepass", "default-allocator", "unchunked")) +
+                        f" | {report('plain')['pageFaultsPerFrame']:.0f} / {report('default-allocator')['pageFaultsPerFrame']:.0f} |")
     out.append("\n".join(rows) + "\n")
 
 
