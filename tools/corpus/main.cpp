@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
                            args[2]);
         } else if (command == "tessellation") {
             const int triangles = cli::integerIn("TRIANGLES", args[1], 2, 20'000'000);
-            corpus::StagingOptions options = parseOptions(args, 3, true);
+            const corpus::StagingOptions options = parseOptions(args, 3, false);
             writeAndReport(corpus::stageSurface(hills(triangles), options), args[2]);
         } else {
             usageError("unknown command '" + command + "'");
