@@ -179,6 +179,25 @@ def frame_ms(r):
     return r["frameMs"]["median"]
 
 
+def plot_frames(rows, scene, path):
+    """Whole-frame time versus MAE, ours and the osgShadow peer's rows in one plot."""
+    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
+    peers = iter("XP*D")
+    for n, r in enumerate(sorted(rows, key=lambda r: r["label"])):
+        peer = bool(r["peer"])
+        ax.scatter([frame_ms(r)], [r["mae"]], s=45 if peer else 20, marker=next(peers) if peer else "os^vD<>P*h"[n % 10],
+                   color="black" if peer else plt.cm.tab20(n % 20), label=r["label"])
+    ax.set_xlabel(f"whole frame, ms (median; {real_meta['timingMethod']})")
+    ax.set_ylabel("mean absolute visibility error vs ray-traced truth")
+    ax.set_yscale("symlog", linthresh=1e-3)
+    ax.set_title(f"{scene}: ours and osgShadow (black), {real_meta['width']}x{real_meta['height']}, 2048² maps",
+                 fontsize=8)
+    ax.legend(fontsize=5, ncol=3)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
 def real_models(real, scaling):
     costs = {c["scene"]: c for c in real["scenes"]}
     out.append("## Real models\n")
@@ -206,7 +225,8 @@ def real_models(real, scaling):
             f"{ours_unshadowed:.1f} / {peer_unshadowed:.1f} ms | {ours_unshadowed / peer_unshadowed:.2f}x | "
             f"{frame_ms(gsm):.1f} / {frame_ms(vdsm):.1f} ms | {frame_ms(gsm) / frame_ms(vdsm):.2f}x | "
             f"{metrics(gsm)} | {metrics(vdsm)} |" if vdsm and gsm and peer_unshadowed else f"| {scene} | {cost['triangles']} | – |")
-        lines = [f"### {scene}\n",
+        plot_frames(rows, scene, plot_folder / f"real-{scene}.png")
+        lines = [f"### {scene}\n", f"![{scene}: frame time versus error, ours and osgShadow](results/real-{scene}.png)\n",
                  f"{cost['triangles']} triangles, {cost['drawCalls']} draw calls ({cost['culledChunks']} chunks culled), "
                  f"{cost['meshBytes'] / 2**20:.1f} MiB of mesh buffers; unshadowed frame {ours_unshadowed:.1f} ms"
                  + (f" (osg {peer_unshadowed:.1f} ms)" if peer_unshadowed else "") + ".\n",
@@ -263,6 +283,7 @@ def engine_options():
 
 
 model_sections = []
-real_models(load("real"), load("scaling"))
+real_meta = load("real")
+real_models(real_meta, load("scaling"))
 
 results_md.write_text("\n".join(out) + "\n")

@@ -22,7 +22,7 @@ std::vector<char> readBytes(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
-PeerTiming timing(const nlohmann::json& document, const char* field, const std::filesystem::path& path) {
+PassTiming timing(const nlohmann::json& document, const char* field, const std::filesystem::path& path) {
     if (!document.contains(field) || !document[field].is_object()) {
         throw engine::Error(path.string() + ": " + field + ": expected an object with median, min, max");
     }

@@ -251,7 +251,7 @@ BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
     result.config.label = "osg-" + run.technique;
     result.config.settings.resolution = run.mapSize;
     result.peerClass = run.osgClass;
-    result.frame = {run.shadowed.median, run.shadowed.min, run.shadowed.max};
+    result.frame = run.shadowed;
     result.shadowPass = {-1.0, -1.0, -1.0}; // the peer times whole frames only
     result.lightingPass = {-1.0, -1.0, -1.0};
     std::vector<float> visibility = run.visibility;

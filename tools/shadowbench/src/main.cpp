@@ -258,7 +258,7 @@ int main(int argc, char** argv) {
                     ours.resolution = run->mapSize;
                     results.push_back(bench.peerResult(*scene, *run, bench.measure(*scene, ours).bandPixels));
                     if (technique == "vdsm") {
-                        cost.peerUnshadowedFrame = {run->unshadowed.median, run->unshadowed.min, run->unshadowed.max};
+                        cost.peerUnshadowedFrame = run->unshadowed;
                     }
                     const shadowbench::ShadowMetrics& m = results.back().metrics;
                     std::cout << scene->name() << " osg-" << technique << " (" << run->osgClass << "): acne "

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <shadowbench/ShadowBench.h>
+
 #include <glm/vec2.hpp>
 
 #include <filesystem>
@@ -8,13 +10,6 @@
 #include <vector>
 
 namespace shadowbench {
-
-/// @brief Median, fastest and slowest frame of a peer's run, milliseconds.
-struct PeerTiming {
-    double median = 0.0;
-    double min = 0.0;
-    double max = 0.0;
-};
 
 /// @brief One run of the OpenSceneGraph peer (tools/osgpeer) on a scene: what its PREFIX.json and
 /// PREFIX.visibility.pfm hold.
@@ -25,8 +20,8 @@ struct PeerRun {
     std::string osgClass;
     std::string renderer;
     int mapSize = 0;
-    PeerTiming shadowed;
-    PeerTiming unshadowed;
+    PassTiming shadowed;
+    PassTiming unshadowed;
     /// Visibility per pixel, rows top to bottom (our images' order), in [0,1], or -1 where the peer's
     /// unshadowed frame had no lit surface.
     std::vector<float> visibility;
