@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# The main job: renders the default scene (knob) headless with every shadow technique, and every content scene
-# with the default technique, into out/ (or $1), then writes out/report.md summarising what was rendered.
+# The main job: renders the default scene (knob) headless with every shadow technique, every content scene and
+# every real model of the corpus (tools/corpus.sh) with the default technique, into out/ (or $1), then writes
+# out/report.md summarising what was rendered.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out}
 bash tools/setup.sh
 cmake --preset default >/dev/null
-cmake --build --preset default --target gs-render
+cmake --build --preset default --target gs-render gs-corpus
 render=./build/bin/gs-render
 techniques=(hard slope-scaled hw-pcf pcf gsm pcf-gsm-naive pcf-gsm-point pcf-gsm-average pcf-gsm-quadratic
             receiver-plane normal-offset)
@@ -15,6 +16,11 @@ for technique in "${techniques[@]}"; do
 done
 for scene in torus bowl thin-shell crease-cube grazing-plane spheres; do
     "$render" --scene "$scene" --out "$out/scenes/$scene"
+done
+bash tools/corpus.sh
+for model in corpus/*.glb; do
+    name=$(basename "$model" .glb)
+    "$render" --scene "$name" --size 640x480 --out "$out/corpus/$name"
 done
 python3 tools/demo_report.py "$out" > "$out/report.md.tmp" && mv "$out/report.md.tmp" "$out/report.md"
 cat "$out/report.md"
