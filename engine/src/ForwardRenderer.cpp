@@ -47,8 +47,13 @@ ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& prog
     static_assert(kMaxLights < 16, "the light count must fit the four GS_LIGHT_COUNT_BIT flags");
 }
 
+void ForwardRenderer::releaseUnreferencedMeshes() {
+    std::erase_if(meshes_, [](const auto& entry) { return entry.second.mesh.use_count() == 1; });
+}
+
 FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
                                          std::uint64_t frameIndex) {
+    releaseUnreferencedMeshes();
     const Entity& cameraEntity = scene.entity(camera);
     if (!cameraEntity.camera) {
         throw Error("render: entity '" + cameraEntity.name + "' has no camera component");

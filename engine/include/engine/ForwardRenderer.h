@@ -75,8 +75,13 @@ public:
     /// their resources per draw.
     FrameStats lightingPass(const FrameContext& frame, std::span<Module* const> modules);
 
-    /// @brief GPU bytes of the vertex and index buffers of every mesh uploaded so far.
+    /// @brief GPU bytes of the vertex and index buffers of the meshes held (uploaded and still referenced).
     [[nodiscard]] std::size_t meshBytes() const;
+    /// @brief Meshes held: those drawn or bounded so far that a scene still references.
+    [[nodiscard]] std::size_t cachedMeshCount() const { return meshes_.size(); }
+    /// @brief Frees the GPU copy and bounds of every mesh no one but this cache references any more (its
+    /// scenes were dropped). beginFrame calls it, so long sessions that switch scenes do not accumulate meshes.
+    void releaseUnreferencedMeshes();
 
     LightingEnvironment environment;
     /// Output of the lighting pass. Default Shaded.
