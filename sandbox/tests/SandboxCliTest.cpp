@@ -76,6 +76,14 @@ TEST(SandboxCliTest, UnknownTechniqueExits2) {
     expectFailure("--headless --compare gsm2", 2, "--compare: unknown technique 'gsm2'");
 }
 
+TEST(SandboxCliTest, SchemaInvalidGltfExits1NamingTheMember) {
+    const auto folder = sandbox::test::freshFolder("cli-wrong-type");
+    const auto scene = folder / "wrong-type.gltf";
+    engine::writeTextFile(scene, R"({"asset":{"version":"2.0"},"nodes":[{"mesh":"0"}]})");
+    expectFailure("--headless --scene " + scene.string() + " --size 32x24", 1,
+                  scene.string() + ": nodes[0].mesh: expected a non-negative integer");
+}
+
 TEST(SandboxCliTest, UnknownSceneExits2) {
     expectFailure("--headless --scene nope", 2,
                   "--scene: unknown scene 'nope' (scenes: bowl, crease-cube,");

@@ -30,6 +30,8 @@ expect unknownOption 2 "unknown option '--bogus'" -- "$render" --bogus
 expect badSize 2 "--size: 'axb' is not WIDTHxHEIGHT|--size: 'a' is not an integer" -- "$render" --size axb
 expect zeroSize 2 "--size: '0' is not an integer in \[1, 16384\]" -- "$render" --size 0x10
 expect unknownScene 1 "scenes/nope.gltf: file not found" -- "$render" --scene nope
+printf '%s' '{"asset":{"version":"2.0"},"meshes":[{"primitives":{"attributes":{"POSITION":0}}}]}' >"$out/wrong-type.gltf"
+expect wrongTypeGltf 1 "wrong-type.gltf: meshes\[0\].primitives: expected an array" -- "$render" --scene "$out/wrong-type.gltf" --out "$out/w"
 expect missingValue 2 "--out needs a value" -- "$render" --out
 expect missingModule 1 "module 'nothere' not found" -- "$render" --out "$out/m" --module nothere
 expect noEglDriver 1 "headless context: .*libegl-mesa0" -- env LIBGL_DRIVERS_PATH=/nonexistent "$render" --out "$out/n"

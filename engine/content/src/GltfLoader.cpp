@@ -3,6 +3,7 @@
 #include "content/CageLoader.h"
 #include "content/ContentError.h"
 #include "content/SubdivisionSurface.h"
+#include "GltfMemberTypes.h"
 
 #include <tiny_gltf.h>
 
@@ -231,12 +232,18 @@ private:
             fail("is larger than 4 GiB, which glTF does not support");
         }
         const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+        std::span<const std::uint8_t> json = bytes;
         if (binary) {
             std::size_t length = 0;
-            checkJsonNesting(glbJsonChunk(bytes, source_, length), source_);
+            json = glbJsonChunk(bytes, source_, length);
             bytes = bytes.first(length);
-        } else {
-            checkJsonNesting(bytes, source_);
+        }
+        checkJsonNesting(json, source_);
+        // Members of the wrong JSON type would be dropped silently by tinygltf; refuse them by name. Text that
+        // is not JSON at all is left to tinygltf's parser and its message.
+        const nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
+        if (!document.is_discarded()) {
+            checkGltfMemberTypes(document, source_);
         }
         const auto size = static_cast<unsigned int>(bytes.size());
         ConfinedFiles files(baseFolder_);
