@@ -1,5 +1,6 @@
 #pragma once
 
+#include <shadows/EnumNames.h>
 #include <shadows/TapPattern.h>
 
 #include <optional>
@@ -68,7 +69,8 @@ enum class ShadowDebugView {
 };
 
 /// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it
-/// (changing anything re-initialises the affected resources lazily on the next frame).
+/// (changing anything re-initialises the affected resources lazily on the next frame). The defaults are
+/// here; units, ranges, labels and help are in the one schema (ShadowSettingsSchema.h).
 struct ShadowSettings {
     /// Visibility function. Default PcfGsmAverageGradient.
     ShadowTechnique technique = ShadowTechnique::PcfGsmAverageGradient;
@@ -137,8 +139,25 @@ struct ShadowSettings {
     bool operator==(const ShadowSettings&) const = default;
 };
 
-/// @brief Stable names ("hard", "slope-scaled", "hw-pcf", "pcf", "gsm", "pcf-gsm-naive", "pcf-gsm-point",
-/// "pcf-gsm-average", "pcf-gsm-quadratic", "receiver-plane", "normal-offset") for CLIs and files.
+// The one name table of each settings enum (ShadowEnumNames.cpp; techniques from the technique table).
+template <>
+std::span<const EnumName<ShadowTechnique>> enumNames();
+template <>
+std::span<const EnumName<TapLayout>> enumNames();
+template <>
+std::span<const EnumName<GradientSource>> enumNames();
+template <>
+std::span<const EnumName<DepthFormat>> enumNames();
+template <>
+std::span<const EnumName<CasterFaces>> enumNames();
+template <>
+std::span<const EnumName<AverageGradientForm>> enumNames();
+template <>
+std::span<const EnumName<ReceiverPlaneKernel>> enumNames();
+template <>
+std::span<const EnumName<ShadowDebugView>> enumNames();
+
+/// @brief Stable technique names for CLIs and files (shadows::techniqueTable()).
 std::string_view toString(ShadowTechnique technique);
 std::optional<ShadowTechnique> techniqueFromString(std::string_view name);
 /// @brief Every technique in declaration order.
