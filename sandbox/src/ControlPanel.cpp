@@ -3,7 +3,7 @@
 #include "ParameterTable.h"
 #include "SandboxError.h"
 
-#include <shadows/ShadowTechniqueTraits.h>
+#include <shadows/ShadowPlan.h>
 
 #include <content/ContentError.h>
 
@@ -77,9 +77,9 @@ bool drawRow(const shadows::SettingRow& row, shadows::ShadowSettings& settings) 
 }
 
 std::string uses(const shadows::ShadowSettings& settings) {
-    const shadows::ShadowTechniqueTraits traits = shadows::techniqueTraits(settings);
+    const shadows::ShadowPlan plan = shadows::ShadowPlan::resolve(settings);
     std::string text;
-    switch (traits.sampler) {
+    switch (plan.sampler) {
     case shadows::MapSampler::CompareNearest:
         text = "hardware compare";
         break;
@@ -90,16 +90,17 @@ std::string uses(const shadows::ShadowSettings& settings) {
         text = "filtered depth";
         break;
     case shadows::MapSampler::Moments:
-        text = std::to_string(traits.moments) + " filtered moments";
+        text = plan.traits->stores == shadows::MapContent::TwoMoments ? "2 filtered moments"
+                                                                      : "4 filtered moments";
         break;
     }
-    if (traits.usesTapPattern) {
+    if (plan.usesTapPattern) {
         text += ", tap pattern";
     }
-    if (traits.readsPointGradient) {
+    if (plan.traits->readsPointGradient) {
         text += ", point gradient";
     }
-    if (traits.offsetsCasters) {
+    if (plan.offsetsCasters) {
         text += ", caster polygon offset";
     }
     return text;

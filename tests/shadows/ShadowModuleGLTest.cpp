@@ -290,13 +290,3 @@ TEST(ShadowSettingsTest, InvalidSettingsNameEveryBadField) {
         }
     }
 }
-
-TEST(ShadowSettingsTest, NamesRoundTrip) {
-    for (const ShadowTechnique technique : allTechniques()) {
-        EXPECT_EQ(techniqueFromString(toString(technique)), technique);
-    }
-    EXPECT_EQ(allTechniques().size(), kTechniqueCount);
-    EXPECT_FALSE(techniqueFromString("shadow-volumes"));
-    EXPECT_EQ(depthFormatFromString("d16"), DepthFormat::D16);
-    EXPECT_FALSE(depthFormatFromString("d8"));
-}

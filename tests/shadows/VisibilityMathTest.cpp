@@ -1,5 +1,4 @@
 // CPU tests of shaders/shadows/visibility.glsl (compiled as C++ through VisibilityMath.h).
-#include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/TapPattern.h>
 #include <shadows/VisibilityMath.h>
 
@@ -266,36 +265,6 @@ TEST(TapPatternTest, PoissonPatternIsDeterministicAndInsideTheRadius) {
     for (const glm::vec2& o : a.offsets) {
         EXPECT_LE(glm::length(o), 2.5f + 1e-5f);
     }
-}
-
-TEST(ShadowTechniqueTableTest, OneRowPerTechniqueInEnumOrder) {
-    const auto table = techniqueTable();
-    ASSERT_EQ(table.size(), kTechniqueCount);
-    ASSERT_EQ(allTechniques().size(), kTechniqueCount);
-    for (std::size_t i = 0; i < table.size(); ++i) {
-        EXPECT_EQ(static_cast<std::size_t>(table[i].technique), i);
-        EXPECT_FALSE(table[i].defines.empty()) << table[i].name;
-    }
-}
-
-TEST(ShadowTechniqueTableTest, DefinesFollowOptionsOnlyWhereTheyApply) {
-    ShadowSettings settings;
-    settings.technique = ShadowTechnique::HardCompare;
-    settings.pcfRotate = true; // no pattern: no rotation variant
-    auto defines = lightingDefines(settings);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_ROTATE"), 0);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_SAMPLER_COMPARE"), 1);
-
-    settings.technique = ShadowTechnique::Gsm;
-    settings.gradientSource = GradientSource::ScreenSpace;
-    defines = lightingDefines(settings);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_GRADIENT_SCREEN"), 1);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_SAMPLER_COMPARE"), 0);
-
-    settings.technique = ShadowTechnique::ReceiverPlaneBias;
-    settings.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
-    EXPECT_EQ(techniqueTraits(settings).sampler, MapSampler::CompareNearest);
-    EXPECT_TRUE(techniqueTraits(settings).usesTapPattern);
 }
 
 TEST(FilteredShadowMathTest, ChebyshevMatchesTheClosedFormBound) {

@@ -1,5 +1,5 @@
+#include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettingsSchema.h>
-#include <shadows/ShadowTechniqueTraits.h>
 
 #include <cmath>
 #include <sstream>
@@ -32,7 +32,7 @@ bool always(const S&) {
     return true;
 }
 bool usesTaps(const S& s) {
-    return techniqueTraits(s).usesTapPattern;
+    return ShadowPlan::resolve(s).usesTapPattern;
 }
 /// The circular-8 forms of the average gradient bring their own 8-tap layout (ShadowSettings::tapPattern).
 bool layoutForced(const S& s) {
@@ -40,21 +40,23 @@ bool layoutForced(const S& s) {
            s.averageGradientForm != AverageGradientForm::LeastSquares;
 }
 bool offsetsCasters(const S& s) {
-    return techniqueTraits(s).offsetsCasters;
+    return traitsOf(s.technique).offsetsCasters;
 }
 bool readsPointGradient(const S& s) {
-    return techniqueTraits(s).readsPointGradient;
+    return traitsOf(s.technique).readsPointGradient;
 }
 bool comparesInHardware(const S& s) {
-    const MapSampler sampler = techniqueTraits(s).sampler;
+    const MapSampler sampler = ShadowPlan::resolve(s).sampler;
     return sampler == MapSampler::CompareNearest || sampler == MapSampler::CompareLinear;
 }
 bool filtersMoments(const S& s) {
-    return techniqueTraits(s).moments > 0;
+    return traitsOf(s.technique).stores != MapContent::Depth;
 }
-bool isGsm(const S& s) {
-    return s.technique == T::Gsm || s.technique == T::PcfGsmNaive || s.technique == T::PcfGsmPointGradient ||
-           s.technique == T::PcfGsmAverageGradient || s.technique == T::PcfGsmQuadratic;
+bool comparesFuzzily(const S& s) {
+    return traitsOf(s.technique).fuzzyComparison;
+}
+bool jittered(const S& s) {
+    return traitsOf(s.technique).jittered;
 }
 template <ShadowTechnique Technique>
 bool only(const S& s) {
@@ -105,13 +107,13 @@ const std::vector<SettingRow>& rows() {
          [](const S& s) { return usesTaps(s) && !layoutForced(s) && s.pcfLayout != TapLayout::Circular8; }},
         {"pcfRadius", "texels", "PCF radius", "Radius of the tap pattern (and of the jittered offsets).",
          FloatSetting{&S::pcfRadius, {.minExclusive = true}, 0.5f, 8.0f, "%.2f"},
-         [](const S& s) { return usesTaps(s) || s.technique == T::JitteredPcf; }},
+         [](const S& s) { return usesTaps(s) || jittered(s); }},
         {"pcfRotate", "", "rotate pattern per pixel",
          "Trades banding for noise (interleaved gradient noise).", BoolSetting{&S::pcfRotate}, usesTaps},
         {"gradientSource", "", "gradient source", "Where the fragment's depth gradient comes from.",
          choice<GradientSource, &S::gradientSource>(), readsPointGradient},
         {"fuzzyScale", "texels", "fuzzy scale", "Width of the GSM fuzzy comparison band.",
-         FloatSetting{&S::fuzzyScale, {.minExclusive = true}, 0.1f, 8.0f, "%.2f", true}, isGsm},
+         FloatSetting{&S::fuzzyScale, {.minExclusive = true}, 0.1f, 8.0f, "%.2f", true}, comparesFuzzily},
         {"receiverPlaneKernel", "", "receiver-plane kernel", "2x2 bilinear gather, or one bias per PCF tap.",
          choice<ReceiverPlaneKernel, &S::receiverPlaneKernel>(), only<T::ReceiverPlaneBias>},
         {"receiverPlaneClamp", "", "clamp bias to min(0, bias)",
@@ -139,7 +141,7 @@ const std::vector<SettingRow>& rows() {
          BoolSetting{&S::msmQuantize16}, only<T::Msm>},
         {"jitterTaps", "", "jittered taps", "Stratified taps per pixel (two per jitter texel).",
          IntSetting{&S::jitterTaps, [](const S&) { return fixed({.min = 8, .max = 64, .step = 2}); }},
-         only<T::JitteredPcf>},
+         jittered},
         {"earlyOutTestTaps", "", "early-out test taps",
          "Taps taken before deciding whether the pixel needs the full kernel; 0 always takes the full "
          "kernel.",
@@ -152,7 +154,7 @@ const std::vector<SettingRow>& rows() {
                                       .zeroAllowed = true,
                                       .qualifier = "and below jitterTaps"});
                     }},
-         only<T::JitteredPcf>},
+         jittered},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},

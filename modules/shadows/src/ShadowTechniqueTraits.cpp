@@ -2,117 +2,104 @@
 
 namespace shadows {
 
+namespace {
+
+using T = ShadowTechnique;
+using S = MapSampler;
+
+constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
+    {.technique = T::HardCompare,
+     .name = "hard",
+     .summary = "one hardware comparison (sampler2DShadow, NEAREST) + constant bias",
+     .defines = {"GS_SHADOW_SINGLE_COMPARE"}},
+    {.technique = T::SlopeScaledBias,
+     .name = "slope-scaled",
+     .summary = "as hard, with glPolygonOffset(slopeScale, slopeUnits) on the casters",
+     .defines = {"GS_SHADOW_SINGLE_COMPARE"},
+     .offsetsCasters = true},
+    {.technique = T::HardwarePcf,
+     .name = "hw-pcf",
+     .summary = "hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)",
+     .sampler = S::CompareLinear,
+     .defines = {"GS_SHADOW_SINGLE_COMPARE"}},
+    {.technique = T::Pcf,
+     .name = "pcf",
+     .summary = "N-tap PCF: grid or Poisson pattern, optional per-pixel rotation",
+     .defines = {"GS_SHADOW_PCF"},
+     .usesTapPattern = true},
+    {.technique = T::Gsm,
+     .name = "gsm",
+     .summary = "gradient shadow map: linear-filtered depth, fuzzy comparison saturate(diff / |g| + 1)",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_GSM"},
+     .readsPointGradient = true,
+     .fuzzyComparison = true},
+    {.technique = T::PcfGsmNaive,
+     .name = "pcf-gsm-naive",
+     .summary = "PCF over GSM, every tap at the fragment's depth (reproduces the darkening)",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_PCF_GSM"},
+     .readsPointGradient = true,
+     .usesTapPattern = true,
+     .fuzzyComparison = true},
+    {.technique = T::PcfGsmPointGradient,
+     .name = "pcf-gsm-point",
+     .summary = "PCF over GSM, taps follow the fragment's gradient",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_POINT"},
+     .readsPointGradient = true,
+     .usesTapPattern = true,
+     .fuzzyComparison = true},
+    {.technique = T::PcfGsmAverageGradient,
+     .name = "pcf-gsm-average",
+     .summary = "PCF over GSM, taps follow the least-squares gradient of the taps' own depths",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_AVERAGE"},
+     .usesTapPattern = true,
+     .fuzzyComparison = true},
+    {.technique = T::PcfGsmQuadratic,
+     .name = "pcf-gsm-quadratic",
+     .summary = "PCF over GSM, taps follow a least-squares quadric of the taps' depths",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
+     .usesTapPattern = true,
+     .fuzzyComparison = true},
+    {.technique = T::ReceiverPlaneBias,
+     .name = "receiver-plane",
+     .summary = "receiver-plane depth bias from screen derivatives, 2x2 gather or per PCF tap",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_RECEIVER_PLANE"}},
+    {.technique = T::NormalOffset,
+     .name = "normal-offset",
+     .summary = "receiver pushed along its normal by normalOffsetTexels texel sizes",
+     .defines = {"GS_SHADOW_SINGLE_COMPARE", "GS_SHADOW_NORMAL_OFFSET"}},
+    {.technique = T::Vsm,
+     .name = "vsm",
+     .summary = "variance shadow map: blurred, mipmapped (z, z^2), Chebyshev bound",
+     .sampler = S::Moments,
+     .defines = {"GS_SHADOW_VSM"},
+     .stores = MapContent::TwoMoments},
+    {.technique = T::Msm,
+     .name = "msm",
+     .summary = "moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)",
+     .sampler = S::Moments,
+     .defines = {"GS_SHADOW_MSM"},
+     .stores = MapContent::FourMoments},
+    {.technique = T::JitteredPcf,
+     .name = "pcf-jittered",
+     .summary = "PCF over a stratified jitter texture, optional early-out on a few test taps",
+     .defines = {"GS_SHADOW_JITTERED"},
+     .jittered = true},
+}};
+
+} // namespace
+
 std::span<const ShadowTechniqueTraits> techniqueTable() {
-    using T = ShadowTechnique;
-    using S = MapSampler;
-    static const std::vector<ShadowTechniqueTraits> table = {
-        {T::HardCompare, "hard", S::CompareNearest, {"GS_SHADOW_SINGLE_COMPARE"}, false, false, false},
-        {T::SlopeScaledBias,
-         "slope-scaled",
-         S::CompareNearest,
-         {"GS_SHADOW_SINGLE_COMPARE"},
-         false,
-         false,
-         true},
-        {T::HardwarePcf, "hw-pcf", S::CompareLinear, {"GS_SHADOW_SINGLE_COMPARE"}, false, false, false},
-        {T::Pcf, "pcf", S::CompareNearest, {"GS_SHADOW_PCF"}, false, true, false},
-        {T::Gsm, "gsm", S::DepthLinear, {"GS_SHADOW_GSM"}, true, false, false},
-        {T::PcfGsmNaive, "pcf-gsm-naive", S::DepthLinear, {"GS_SHADOW_PCF_GSM"}, true, true, false},
-        {T::PcfGsmPointGradient,
-         "pcf-gsm-point",
-         S::DepthLinear,
-         {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_POINT"},
-         true,
-         true,
-         false},
-        {T::PcfGsmAverageGradient,
-         "pcf-gsm-average",
-         S::DepthLinear,
-         {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_AVERAGE"},
-         false,
-         true,
-         false},
-        {T::PcfGsmQuadratic,
-         "pcf-gsm-quadratic",
-         S::DepthLinear,
-         {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
-         false,
-         true,
-         false},
-        {T::ReceiverPlaneBias,
-         "receiver-plane",
-         S::DepthLinear,
-         {"GS_SHADOW_RECEIVER_PLANE"},
-         false,
-         false,
-         false},
-        {T::NormalOffset,
-         "normal-offset",
-         S::CompareNearest,
-         {"GS_SHADOW_SINGLE_COMPARE", "GS_SHADOW_NORMAL_OFFSET"},
-         false,
-         false,
-         false},
-        {T::Vsm, "vsm", S::Moments, {"GS_SHADOW_VSM"}, false, false, false, 2},
-        {T::Msm, "msm", S::Moments, {"GS_SHADOW_MSM"}, false, false, false, 4},
-        {T::JitteredPcf, "pcf-jittered", S::CompareNearest, {"GS_SHADOW_JITTERED"}, false, false, false},
-    };
-    return table;
+    return kTable;
 }
 
-ShadowTechniqueTraits techniqueTraits(const ShadowSettings& settings) {
-    ShadowTechniqueTraits traits = techniqueTable()[static_cast<std::size_t>(settings.technique)];
-    if (settings.technique == ShadowTechnique::ReceiverPlaneBias &&
-        settings.receiverPlaneKernel == ReceiverPlaneKernel::PerTap) {
-        traits.sampler = MapSampler::CompareNearest;
-        traits.usesTapPattern = true;
-        traits.defines.push_back("GS_SHADOW_RPB_PER_TAP");
-    }
-    if (settings.technique == ShadowTechnique::Msm && settings.msmQuantize16) {
-        traits.defines.push_back("GS_SHADOW_MSM_QUANTIZED");
-    }
-    if (settings.technique == ShadowTechnique::JitteredPcf && settings.earlyOutTestTaps > 0) {
-        traits.defines.push_back("GS_SHADOW_EARLY_OUT");
-    }
-    if (settings.technique == ShadowTechnique::PcfGsmAverageGradient) {
-        if (settings.averageGradientForm == AverageGradientForm::Circular8) {
-            traits.defines.push_back("GS_SHADOW_AVG_CIRCULAR8");
-        } else if (settings.averageGradientForm == AverageGradientForm::Circular8Vec4) {
-            traits.defines.push_back("GS_SHADOW_AVG_VEC4");
-        }
-    }
-    return traits;
-}
-
-std::vector<std::string_view> lightingDefines(const ShadowSettings& settings) {
-    const ShadowTechniqueTraits traits = techniqueTraits(settings);
-    std::vector<std::string_view> defines = {"GS_SHADOWS"};
-    defines.insert(defines.end(), traits.defines.begin(), traits.defines.end());
-    if (traits.sampler == MapSampler::CompareNearest || traits.sampler == MapSampler::CompareLinear) {
-        defines.push_back("GS_SHADOW_SAMPLER_COMPARE");
-    }
-    if (traits.readsPointGradient) {
-        constexpr std::string_view kGradientDefines[] = {
-            "GS_SHADOW_GRADIENT_STORED", "GS_SHADOW_GRADIENT_CENTRAL", "GS_SHADOW_GRADIENT_SCREEN"};
-        defines.push_back(kGradientDefines[static_cast<std::size_t>(settings.gradientSource)]);
-    }
-    if (traits.usesTapPattern && settings.pcfRotate) {
-        defines.push_back("GS_SHADOW_ROTATE");
-    }
-    if (settings.floorReceiverDepth) {
-        defines.push_back("GS_SHADOW_FLOOR");
-    }
-    constexpr std::string_view kDebugDefines[] = {"",
-                                                  "GS_SHADOW_DEBUG_TEXELS",
-                                                  "GS_SHADOW_DEBUG_GRADIENT",
-                                                  "GS_SHADOW_DEBUG_BIAS",
-                                                  "GS_SHADOW_DEBUG_VISIBILITY",
-                                                  "GS_SHADOW_DEBUG_MAP",
-                                                  "GS_SHADOW_DEBUG_KERNEL"};
-    if (settings.debugView != ShadowDebugView::None) {
-        defines.push_back(kDebugDefines[static_cast<std::size_t>(settings.debugView)]);
-    }
-    return defines;
+const ShadowTechniqueTraits& traitsOf(ShadowTechnique technique) {
+    return kTable[static_cast<std::size_t>(technique)];
 }
 
 } // namespace shadows

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <shadows/EnumNames.h>
+#include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/TapPattern.h>
 
 #include <optional>
@@ -9,27 +10,6 @@
 #include <vector>
 
 namespace shadows {
-
-/// @brief The visibility functions the module can run; each selectable at run time.
-enum class ShadowTechnique {
-    HardCompare,           ///< 1. one hardware comparison (sampler2DShadow, NEAREST) + constant bias
-    SlopeScaledBias,       ///< 2. as 1, with slope-scaled polygon offset on the casters
-    HardwarePcf,           ///< 3. hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)
-    Pcf,                   ///< 4. N-tap PCF (grid or Poisson), optional per-pixel rotation
-    Gsm,                   ///< 5. single-tap gradient shadow map: linear depth, fuzzy comparison
-    PcfGsmNaive,           ///< 6. PCF over GSM, taps compared at the fragment's depth (reproduces Fig. 4.2.3)
-    PcfGsmPointGradient,   ///< 7. PCF over GSM, taps follow the fragment's gradient
-    PcfGsmAverageGradient, ///< 8. PCF over GSM, taps follow the least-squares gradient of the taps
-    PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
-    ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
-    NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
-    Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
-    Msm,         ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
-    JitteredPcf, ///< PCF over a stratified jitter texture, optional early-out on a few test taps
-};
-
-/// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::JitteredPcf) + 1;
 
 /// @brief Where the single-fragment depth gradient comes from (GSM reference, "Overview").
 enum class GradientSource {
@@ -157,7 +137,7 @@ std::span<const EnumName<ReceiverPlaneKernel>> enumNames();
 template <>
 std::span<const EnumName<ShadowDebugView>> enumNames();
 
-/// @brief Stable technique names for CLIs and files (shadows::techniqueTable()).
+/// @brief Stable technique names for CLIs and files (from shadows::techniqueTable()).
 std::string_view toString(ShadowTechnique technique);
 std::optional<ShadowTechnique> techniqueFromString(std::string_view name);
 /// @brief Every technique in declaration order.
