@@ -1,4 +1,5 @@
 #include "JitterTexture.h"
+#include "ShadowBlock.h"
 #include "ShadowMapTarget.h"
 #include "ShadowSamplers.h"
 
@@ -21,9 +22,20 @@ namespace shadows {
 
 namespace {
 
-constexpr int kMaxMaps = 4; // GS_SHADOW_MAX_MAPS in receiver.glsl
 const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
 const engine::ProgramDesc kBlurProgram{"shadows/fullscreen.vert", "shadows/blur.frag"};
+
+/// Includes every embedded technique file (shaders/shadows/techniques/), so adding one needs no list.
+std::string techniqueIncludes() {
+    constexpr std::string_view kFolder = "shadows/techniques/";
+    std::string includes;
+    for (const engine::EmbeddedShaderFile& file : gsShadowShaders()) {
+        if (std::string_view(file.name).starts_with(kFolder)) {
+            includes += "#include \"" + std::string(file.name) + "\"\n";
+        }
+    }
+    return includes;
+}
 
 } // namespace
 
@@ -74,6 +86,7 @@ std::optional<LightProjection> ShadowModule::lightProjection(int lightIndex) con
 void ShadowModule::attach(engine::ModuleHost& host) {
     host_ = &host;
     host.shaders().add(gsShadowShaders());
+    host.shaders().add("shadows/techniques.glsl", techniqueIncludes());
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         mapUnits_.push_back(host.reserveTextureUnit());
         gradientUnits_.push_back(host.reserveTextureUnit());
@@ -84,6 +97,7 @@ void ShadowModule::attach(engine::ModuleHost& host) {
 
 void ShadowModule::detach() {
     releaseResources();
+    shadowBlock_.reset();
     samplers_.reset();
     jitter_.reset();
     fullscreenVertexArray_.reset();
@@ -133,7 +147,7 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         boxes.push_back(local.transformed(frame.scene.worldMatrix(id)));
     });
 
-    slotOfLight_.assign(engine::ForwardRenderer::kMaxLights, -1);
+    std::vector<int> slotOfLight(engine::ForwardRenderer::kMaxLights, -1);
     std::size_t used = 0;
     for (const engine::FrameLight& light : frame.lights) {
         if (!light.light.castsShadows || used == kMaxMaps) {
@@ -153,11 +167,14 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         }
         maps_[used]->lightIndex = light.index;
         maps_[used]->projection = projection;
-        slotOfLight_[static_cast<std::size_t>(light.index)] = static_cast<int>(used);
+        slotOfLight[static_cast<std::size_t>(light.index)] = static_cast<int>(used);
         ++used;
     }
     // Lights that stopped casting (or left the view) give their maps back.
     maps_.resize(used);
+    if (used > 0) {
+        uploadBlock(slotOfLight);
+    }
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
@@ -254,49 +271,23 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
             glBindSampler(gradientUnits_[slot], samplers_->linear());
         }
     }
+    glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());
     auto& uploaded = uploadedFrame_[program.id()];
     if (uploaded == frameIndex_ + 1) {
         return; // this program already holds this frame's uniforms
     }
     uploaded = frameIndex_ + 1;
 
+    // What the block cannot hold: sampler units, and the tap arrays (std140 would pad each float to 16
+    // bytes).
     const GLuint id = program.id();
-    glProgramUniform1iv(id, program.uniformLocation("gsShadowSlot"),
-                        static_cast<GLsizei>(slotOfLight_.size()), slotOfLight_.data());
-    std::vector<glm::mat4> matrices(kMaxMaps, glm::mat4(1.0f));
-    std::vector<glm::vec4> texels(kMaxMaps, glm::vec4(0.0f));
-    const float resolution = static_cast<float>(settings_.resolution);
-    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
-        const LightProjection& projection = maps_[slot]->projection;
-        matrices[slot] = projection.worldToShadow;
-        texels[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
-                                 projection.perspective ? 1.0f : 0.0f);
-    }
-    glProgramUniformMatrix4fv(id, program.uniformLocation("gsShadowMatrix"), kMaxMaps, GL_FALSE,
-                              glm::value_ptr(matrices[0]));
-    glProgramUniform4fv(id, program.uniformLocation("gsShadowTexel"), kMaxMaps, glm::value_ptr(texels[0]));
     const std::vector<GLint> mapUnits(mapUnits_.begin(), mapUnits_.end());
     const std::vector<GLint> gradientUnits(gradientUnits_.begin(), gradientUnits_.end());
     glProgramUniform1iv(id, program.uniformLocation("gsShadowMap"), kMaxMaps, mapUnits.data());
     if (const GLint location = program.uniformLocation("gsShadowGradientMap"); location >= 0) {
         glProgramUniform1iv(id, location, kMaxMaps, gradientUnits.data());
     }
-    program.set("gsShadowConstantBias", settings_.constantBias);
-    program.set("gsShadowDepthStep", depthStep(settings_.depthFormat));
-    program.set("gsShadowFuzzyScale", settings_.fuzzyScale);
-    program.set("gsShadowNormalOffset", settings_.normalOffsetTexels);
-    program.set("gsShadowReceiverPlaneClamp", settings_.receiverPlaneClamp ? 1 : 0);
-    program.set("gsShadowMinimumVariance", settings_.vsmMinimumVariance);
-    program.set("gsShadowBleedingReduction", settings_.lightBleedingReduction);
-    program.set("gsShadowMomentBias", settings_.msmMomentBias);
-    program.set("gsShadowMsmDequantize", glm::inverse(glsl::GS_MSM_QUANTIZE));
     program.set("gsShadowJitter", static_cast<int>(jitterUnit_));
-    program.set("gsJitterPairs", settings_.jitterTaps / 2);
-    program.set("gsEarlyOutPairs", settings_.earlyOutTestTaps / 2);
-    program.set("gsShadowJitterRadius", settings_.pcfRadius);
-    program.set("gsTapCount", static_cast<int>(pattern_.offsets.size()));
-    program.set("gsTapInverseCovariance", pattern_.inverseCovariance);
-    program.set("gsTapDisplace", settings_.pcfRadius / std::sqrt(2.0f));
     if (const GLint location = program.uniformLocation("gsTapOffsets"); location >= 0) {
         glProgramUniform2fv(id, location, static_cast<GLsizei>(pattern_.offsets.size()),
                             glm::value_ptr(pattern_.offsets[0]));
@@ -305,6 +296,44 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         glProgramUniform1fv(id, location, static_cast<GLsizei>(pattern_.quadraticFitRows.size()),
                             pattern_.quadraticFitRows.data());
     }
+}
+
+void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
+    ShadowBlock block{};
+    const float resolution = static_cast<float>(settings_.resolution);
+    for (int slot = 0; slot < kMaxMaps; ++slot) {
+        block.worldToShadow[slot] = glm::mat4(1.0f);
+    }
+    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
+        const LightProjection& projection = maps_[slot]->projection;
+        block.worldToShadow[slot] = projection.worldToShadow;
+        block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
+                                      projection.perspective ? 1.0f : 0.0f);
+    }
+    for (std::size_t light = 0; light < slotOfLight.size(); ++light) {
+        block.slotOfLight[light / 4][static_cast<glm::length_t>(light % 4)] = slotOfLight[light];
+    }
+    block.msmDequantize = glm::inverse(glsl::GS_MSM_QUANTIZE);
+    block.tapInverseCovariance[0] = glm::vec4(pattern_.inverseCovariance[0], 0.0f, 0.0f);
+    block.tapInverseCovariance[1] = glm::vec4(pattern_.inverseCovariance[1], 0.0f, 0.0f);
+    block.constantBias = settings_.constantBias;
+    block.depthStep = depthStep(settings_.depthFormat);
+    block.fuzzyScale = settings_.fuzzyScale;
+    block.normalOffset = settings_.normalOffsetTexels;
+    block.minimumVariance = settings_.vsmMinimumVariance;
+    block.bleedingReduction = settings_.lightBleedingReduction;
+    block.momentBias = settings_.msmMomentBias;
+    block.jitterRadius = settings_.pcfRadius;
+    block.receiverPlaneClamp = settings_.receiverPlaneClamp ? 1 : 0;
+    block.jitterPairs = settings_.jitterTaps / 2;
+    block.earlyOutPairs = settings_.earlyOutTestTaps / 2;
+    block.tapCount = static_cast<std::int32_t>(pattern_.offsets.size());
+    block.tapDisplace = settings_.pcfRadius / std::sqrt(2.0f);
+    if (!shadowBlock_) {
+        shadowBlock_ =
+            std::make_unique<engine::gl::Buffer>(sizeof(ShadowBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    shadowBlock_->update(0, sizeof block, &block);
 }
 
 } // namespace shadows

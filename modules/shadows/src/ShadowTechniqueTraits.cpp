@@ -38,7 +38,7 @@ constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .name = "pcf-gsm-naive",
      .summary = "PCF over GSM, every tap at the fragment's depth (reproduces the darkening)",
      .sampler = S::DepthLinear,
-     .defines = {"GS_SHADOW_PCF_GSM"},
+     .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NONE"},
      .readsPointGradient = true,
      .usesTapPattern = true,
      .fuzzyComparison = true},

@@ -6,6 +6,7 @@
 #include <shadows/TapPattern.h>
 
 #include <engine/Module.h>
+#include <engine/gl/Buffer.h>
 #include <engine/gl/VertexArray.h>
 
 #include <map>
@@ -61,6 +62,8 @@ public:
 private:
     void releaseResources();
     void filterMoments();
+    /// Writes this frame's GsShadowBlock: the maps' projections, each light's map and the settings' scalars.
+    void uploadBlock(const std::vector<int>& slotOfLight);
     [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;
 
     ShadowSettings settings_;
@@ -74,7 +77,7 @@ private:
     std::unique_ptr<JitterTexture> jitter_;
     std::unique_ptr<engine::gl::VertexArray> fullscreenVertexArray_;
     std::vector<std::unique_ptr<ShadowMapTarget>> maps_;
-    std::vector<int> slotOfLight_;
+    std::unique_ptr<engine::gl::Buffer> shadowBlock_;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds

@@ -52,7 +52,9 @@ struct ShadowTechniqueTraits {
     /// One line for usage texts and the docs' techniques table.
     std::string_view summary;
     MapSampler sampler = MapSampler::CompareNearest;
-    /// Lighting-pass defines (besides GS_SHADOWS) that select the technique in shaders/shadows/receiver.glsl.
+    /// Lighting-pass defines (besides GS_SHADOWS) that select the technique's function
+    /// gsShadowSample_<Technique> in shaders/shadows/techniques/: its family's, and the technique's own where
+    /// a family shares code.
     std::array<std::string_view, 2> defines = {};
     MapContent stores = MapContent::Depth;
     /// Reads a per-fragment depth gradient (ShadowSettings::gradientSource applies).

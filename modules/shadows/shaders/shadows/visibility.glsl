@@ -141,15 +141,6 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
     return gsSaturate(sum / float(max(count, 1)));
 }
 
-// Plain PCF: the fraction of taps whose hard comparison passes (Reeves et al. 1987).
-float gsPcfVisibility(const float depths[GS_MAX_TAPS], int count, float receiverDepth) {
-    float sum = 0.0f;
-    for (int i = 0; i < count; ++i) {
-        sum += gsCompare(depths[i], receiverDepth);
-    }
-    return sum / float(max(count, 1));
-}
-
 // Receiver-plane bias for one texel of a 2x2 bilinear footprint (bias reference, "Applications"):
 // the surface depth extrapolated from the fragment to the texel's centre, `toTexelCentre` texels away;
 // with `clampToLit`, the bias may only move the receiver towards the light (min(0, bias)).
