@@ -5,7 +5,7 @@
 #include "ParameterTable.h"
 #include "SandboxError.h"
 
-#include <shadows/ShadowTechniqueTraits.h>
+#include <shadows/ShadowSettings.h>
 
 #include <string>
 
@@ -44,18 +44,11 @@ int parseInt(const std::string& option, const std::string& text, int low, int hi
     }
 }
 
-std::string techniqueList() {
-    std::string list;
-    for (const shadows::ShadowTechniqueTraits& traits : shadows::techniqueTable()) {
-        list += (list.empty() ? "" : ", ") + std::string(traits.name);
-    }
-    return list;
-}
-
 shadows::ShadowTechnique parseTechnique(const std::string& option, const std::string& name) {
     const auto technique = shadows::techniqueFromString(name);
     if (!technique) {
-        throw SandboxError(option + ": unknown technique '" + name + "' (" + techniqueList() + ")");
+        throw SandboxError(option + ": unknown technique '" + name + "' (" +
+                           shadows::nameList<shadows::ShadowTechnique>() + ")");
     }
     return *technique;
 }
@@ -63,7 +56,7 @@ shadows::ShadowTechnique parseTechnique(const std::string& option, const std::st
 } // namespace
 
 std::string_view CommandLine::usage() {
-    static const std::string text = std::string(kUsage) + techniqueList() + ".";
+    static const std::string text = std::string(kUsage) + shadows::nameList<shadows::ShadowTechnique>() + ".";
     return text;
 }
 

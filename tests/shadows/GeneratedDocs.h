@@ -9,9 +9,10 @@
 #include <sstream>
 #include <string>
 
+/// `document` is relative to the source folder, e.g. "docs/SHADOWS.md".
 inline void expectGeneratedSection(const std::string& document, const std::string& name,
                                    const std::string& expected) {
-    const std::filesystem::path path = std::filesystem::path(DOCS_DIR) / document;
+    const std::filesystem::path path = std::filesystem::path(SOURCE_DIR) / document;
     std::ifstream file(path);
     ASSERT_TRUE(file) << path;
     std::stringstream text;
@@ -26,7 +27,7 @@ inline void expectGeneratedSection(const std::string& document, const std::strin
     const std::string actual = content.substr(from + begin.size(), to - from - begin.size());
     if (actual != expected) {
         content.replace(from + begin.size(), actual.size(), expected);
-        const std::filesystem::path fixed = std::filesystem::current_path() / document;
+        const std::filesystem::path fixed = std::filesystem::current_path() / path.filename();
         std::ofstream(fixed) << content;
         ADD_FAILURE() << path << ": the '" << name << "' section is out of date; the generated document is "
                       << fixed << " (cp it over the original)";

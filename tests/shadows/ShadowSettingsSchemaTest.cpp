@@ -90,5 +90,5 @@ TEST(ShadowSettingsSchemaTest, OfferedIntegersAreTheAcceptedOnes) {
 }
 
 TEST(ShadowSettingsSchemaTest, DocsSettingsTableIsGenerated) {
-    expectGeneratedSection("SHADOWS.md", "settings", settingsMarkdownTable());
+    expectGeneratedSection("docs/SHADOWS.md", "settings", settingsMarkdownTable());
 }

@@ -1,4 +1,6 @@
 // The technique table: one row per technique, in enum order, with what the passes need (no GL).
+#include "GeneratedDocs.h"
+
 #include <shadows/ShadowSettings.h>
 #include <shadows/ShadowTechniqueTraits.h>
 
@@ -35,4 +37,9 @@ TEST(ShadowTechniqueTraitsTest, NamesRoundTrip) {
     EXPECT_FALSE(techniqueFromString("shadow-volumes"));
     EXPECT_EQ(depthFormatFromString("d16"), DepthFormat::D16);
     EXPECT_FALSE(depthFormatFromString("d8"));
+}
+
+TEST(ShadowTechniqueTraitsTest, DocsAndReadmeTechniqueTablesAreGenerated) {
+    expectGeneratedSection("docs/SHADOWS.md", "techniques", techniqueMarkdownTable());
+    expectGeneratedSection("README.md", "techniques", techniqueMarkdownTable());
 }

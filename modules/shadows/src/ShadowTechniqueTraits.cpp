@@ -10,33 +10,39 @@ using S = MapSampler;
 constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardCompare,
      .name = "hard",
-     .summary = "one hardware comparison (sampler2DShadow, NEAREST) + constant bias",
+     .summary = "one hardware comparison (sampler2DShadow, NEAREST) + constant bias (world units)",
+     .reference = "Williams 1978",
      .defines = {"GS_SHADOW_SINGLE_COMPARE"}},
     {.technique = T::SlopeScaledBias,
      .name = "slope-scaled",
-     .summary = "as hard, with glPolygonOffset(slopeScale, slopeUnits) on the casters",
+     .summary = "as `hard` plus `glPolygonOffset(slopeScale, slopeUnits)` on the casters",
+     .reference = "bias reference, \"Alternatives\"",
      .defines = {"GS_SHADOW_SINGLE_COMPARE"},
      .offsetsCasters = true},
     {.technique = T::HardwarePcf,
      .name = "hw-pcf",
-     .summary = "hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)",
+     .summary = "hardware 2×2 bilinear PCF (sampler2DShadow, LINEAR)",
      .sampler = S::CompareLinear,
      .defines = {"GS_SHADOW_SINGLE_COMPARE"}},
     {.technique = T::Pcf,
      .name = "pcf",
-     .summary = "N-tap PCF: grid or Poisson pattern, optional per-pixel rotation",
+     .summary = "N-tap PCF: grid 2×2..8×8 or Poisson 8..64, optional per-pixel rotation",
+     .reference = "Reeves et al. 1987",
      .defines = {"GS_SHADOW_PCF"},
      .usesTapPattern = true},
     {.technique = T::Gsm,
      .name = "gsm",
-     .summary = "gradient shadow map: linear-filtered depth, fuzzy comparison saturate(diff / |g| + 1)",
+     .summary = "linear-filtered depth, fuzzy comparison `saturate(diff/|g| + 1)`; g stored by the depth "
+                "pass, central differences, or screen-space receiver plane",
+     .reference = "GSM reference, \"Overview\"",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_GSM"},
      .readsPointGradient = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmNaive,
      .name = "pcf-gsm-naive",
-     .summary = "PCF over GSM, every tap at the fragment's depth (reproduces the darkening)",
+     .summary = "PCF over GSM, taps at the fragment's depth (reproduces the darkening)",
+     .reference = "GSM reference, Fig. 4.2.3",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NONE"},
      .readsPointGradient = true,
@@ -44,7 +50,8 @@ constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .fuzzyComparison = true},
     {.technique = T::PcfGsmPointGradient,
      .name = "pcf-gsm-point",
-     .summary = "PCF over GSM, taps follow the fragment's gradient",
+     .summary = "PCF over GSM, taps follow `dot(offset, g)` of the fragment's gradient",
+     .reference = "Fig. 4.2.4b",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_POINT"},
      .readsPointGradient = true,
@@ -52,42 +59,58 @@ constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .fuzzyComparison = true},
     {.technique = T::PcfGsmAverageGradient,
      .name = "pcf-gsm-average",
-     .summary = "PCF over GSM, taps follow the least-squares gradient of the taps' own depths",
+     .summary = "PCF over GSM, taps follow the least-squares gradient of the taps' own depths: general "
+                "(precomputed inverse covariance), circular-8 closed form, circular-8 vec4 form",
+     .reference = "\"Optimizing Texture Look-ups\", \"SIMD\"",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_AVERAGE"},
      .usesTapPattern = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmQuadratic,
      .name = "pcf-gsm-quadratic",
-     .summary = "PCF over GSM, taps follow a least-squares quadric of the taps' depths",
+     .summary = "PCF over GSM, taps follow a least-squares quadric of the taps' depths (precomputed 6×N "
+                "pseudo-inverse)",
+     .reference = "the reference's \"obvious improvement\"",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
      .usesTapPattern = true,
      .fuzzyComparison = true},
     {.technique = T::ReceiverPlaneBias,
      .name = "receiver-plane",
-     .summary = "receiver-plane depth bias from screen derivatives, 2x2 gather or per PCF tap",
+     .summary = "dz/duv from screen derivatives (zero where the Jacobian is singular), per-texel bias with "
+                "optional `min(0, bias)`, 2×2 bilinear via `textureGather`, or per tap",
+     .reference = "bias reference, \"Receiver Plane Depth Bias\"",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_RECEIVER_PLANE"}},
     {.technique = T::NormalOffset,
      .name = "normal-offset",
-     .summary = "receiver pushed along its normal by normalOffsetTexels texel sizes",
+     .summary = "receiver pushed along its normal by `normalOffsetTexels` texel sizes",
+     .reference = "bias reference, \"Alternatives\"",
      .defines = {"GS_SHADOW_SINGLE_COMPARE", "GS_SHADOW_NORMAL_OFFSET"}},
     {.technique = T::Vsm,
      .name = "vsm",
-     .summary = "variance shadow map: blurred, mipmapped (z, z^2), Chebyshev bound",
+     .summary = "moments (z, z²) in RG32F, separable box blur (`momentBlurRadius`), mipmaps, trilinear "
+                "lookup, Chebyshev bound with `vsmMinimumVariance`, `lightBleedingReduction` and the early "
+                "return where the mean is beyond the receiver",
+     .reference = "advanced shadow mapping reference, \"Variance Shadow Maps\"",
      .sampler = S::Moments,
      .defines = {"GS_SHADOW_VSM"},
      .stores = MapContent::TwoMoments},
     {.technique = T::Msm,
      .name = "msm",
-     .summary = "moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)",
+     .summary = "4 moments, Hamburger bound via Cholesky with `msmMomentBias` towards (0, 0.63, 0, 0.63); "
+                "RGBA32F, or RGBA16 through the optimised moment basis (`msmQuantize16`, 64 bits per texel)",
+     .reference = "same, \"Moment Shadow Maps\"; Peters & Klein 2015",
      .sampler = S::Moments,
      .defines = {"GS_SHADOW_MSM"},
      .stores = MapContent::FourMoments},
     {.technique = T::JitteredPcf,
      .name = "pcf-jittered",
-     .summary = "PCF over a stratified jitter texture, optional early-out on a few test taps",
+     .summary = "`jitterTaps` (8..64) offsets from a stratified 32×32×(taps/2) jitter texture, two offsets "
+                "per RGBA16 texel; `earlyOutTestTaps` test taps first, the full kernel only where they "
+                "disagree, averaging every tap taken",
+     .reference = "soft shadows reference (whose pseudo-code normalises by the full count even when it stops "
+                  "early — we do not)",
      .defines = {"GS_SHADOW_JITTERED"},
      .jittered = true},
 }};
@@ -100,6 +123,15 @@ std::span<const ShadowTechniqueTraits> techniqueTable() {
 
 const ShadowTechniqueTraits& traitsOf(ShadowTechnique technique) {
     return kTable[static_cast<std::size_t>(technique)];
+}
+
+std::string techniqueMarkdownTable() {
+    std::string table = "| name | what | from |\n| --- | --- | --- |\n";
+    for (const ShadowTechniqueTraits& traits : kTable) {
+        table += "| `" + std::string(traits.name) + "` | " + std::string(traits.summary) + " | " +
+                 std::string(traits.reference) + " |\n";
+    }
+    return table;
 }
 
 } // namespace shadows

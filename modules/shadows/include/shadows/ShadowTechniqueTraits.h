@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace shadows {
@@ -49,8 +50,10 @@ struct ShadowTechniqueTraits {
     ShadowTechnique technique;
     /// Stable name for CLIs and files.
     std::string_view name;
-    /// One line for usage texts and the docs' techniques table.
+    /// What it does, for the techniques tables of docs/SHADOWS.md and the README (Markdown).
     std::string_view summary;
+    /// Where it comes from, for the same tables; empty where nothing is cited.
+    std::string_view reference = {};
     MapSampler sampler = MapSampler::CompareNearest;
     /// Lighting-pass defines (besides GS_SHADOWS) that select the technique's function
     /// gsShadowSample_<Technique> in shaders/shadows/techniques/: its family's, and the technique's own where
@@ -74,5 +77,8 @@ std::span<const ShadowTechniqueTraits> techniqueTable();
 
 /// @brief The row of `technique`.
 const ShadowTechniqueTraits& traitsOf(ShadowTechnique technique);
+
+/// @brief The techniques table of docs/SHADOWS.md and the README (Markdown), one row per technique.
+std::string techniqueMarkdownTable();
 
 } // namespace shadows
