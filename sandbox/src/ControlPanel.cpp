@@ -90,8 +90,7 @@ std::string uses(const shadows::ShadowSettings& settings) {
         text = "filtered depth";
         break;
     case shadows::MapSampler::Moments:
-        text = plan.traits->stores == shadows::MapContent::TwoMoments ? "2 filtered moments"
-                                                                      : "4 filtered moments";
+        text = plan.momentsFormat == GL_RG32F ? "2 filtered moments" : "4 filtered moments";
         break;
     }
     if (plan.usesTapPattern) {

@@ -16,8 +16,8 @@ inline constexpr GLuint kShadowBlockBinding = 1;
 
 static_assert(engine::ForwardRenderer::kMaxLights % 4 == 0, "light slots are packed four to an ivec4");
 
-/// @brief std140 mirror of GsShadowBlock in shaders/shadows/receiver.glsl: every scalar the lighting pass
-/// reads, written once per frame.
+/// @brief std140 mirror of GsShadowBlock in shaders/shadows/block.glsl: every scalar the passes read,
+/// written once per frame.
 struct alignas(16) ShadowBlock {
     glm::mat4 worldToShadow[kMaxMaps];
     /// x resolution, y 1/resolution, z texel scale, w 1 for perspective maps.
@@ -27,6 +27,8 @@ struct alignas(16) ShadowBlock {
     glm::mat4 msmDequantize;
     /// The columns of a mat2: std140 pads each to a vec4.
     glm::vec4 tapInverseCovariance[2];
+    /// The technique's own parameters (ShadowTechniqueTraits::shaderParameters).
+    glm::vec4 techniqueParameters;
     float constantBias;
     float depthStep;
     float fuzzyScale;
@@ -47,7 +49,8 @@ static_assert(offsetof(ShadowBlock, slotOfLight) == 80 * kMaxMaps);
 static_assert(offsetof(ShadowBlock, msmDequantize) ==
               80 * kMaxMaps + 4 * engine::ForwardRenderer::kMaxLights);
 static_assert(offsetof(ShadowBlock, tapInverseCovariance) == offsetof(ShadowBlock, msmDequantize) + 64);
-static_assert(offsetof(ShadowBlock, constantBias) == offsetof(ShadowBlock, tapInverseCovariance) + 32);
+static_assert(offsetof(ShadowBlock, techniqueParameters) == offsetof(ShadowBlock, tapInverseCovariance) + 32);
+static_assert(offsetof(ShadowBlock, constantBias) == offsetof(ShadowBlock, techniqueParameters) + 16);
 static_assert(offsetof(ShadowBlock, receiverPlaneClamp) == offsetof(ShadowBlock, constantBias) + 32);
 static_assert(offsetof(ShadowBlock, tapDisplace) == offsetof(ShadowBlock, receiverPlaneClamp) + 16);
 

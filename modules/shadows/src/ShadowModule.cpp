@@ -183,6 +183,7 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     }
     const engine::gl::Program& program = host_->programs().get(kDepthProgram, depthKey_);
     program.use();
+    glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
@@ -316,6 +317,7 @@ void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
     block.msmDequantize = glm::inverse(glsl::GS_MSM_QUANTIZE);
     block.tapInverseCovariance[0] = glm::vec4(pattern_.inverseCovariance[0], 0.0f, 0.0f);
     block.tapInverseCovariance[1] = glm::vec4(pattern_.inverseCovariance[1], 0.0f, 0.0f);
+    block.techniqueParameters = plan_.shaderParameters;
     block.constantBias = settings_.constantBias;
     block.depthStep = depthStep(settings_.depthFormat);
     block.fuzzyScale = settings_.fuzzyScale;

@@ -1,5 +1,4 @@
 #include <shadows/ShadowPlan.h>
-#include <shadows/VisibilityMath.h>
 
 namespace shadows {
 
@@ -64,22 +63,15 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     }
 }
 
-/// The moments target: format, bytes and the far plane's stored moments.
-void planMoments(const ShadowSettings& settings, ShadowPlan& plan) {
-    switch (plan.traits->stores) {
-    case MapContent::Depth:
-        return;
-    case MapContent::TwoMoments:
-        plan.momentsFormat = GL_RG32F;
-        plan.momentBytesPerTexel = 8;
-        plan.depthDefines.push_back("GS_SHADOW_STORE_MOMENTS2");
-        return;
-    case MapContent::FourMoments:
-        plan.momentsFormat = settings.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F;
-        plan.momentBytesPerTexel = settings.msmQuantize16 ? 8 : 16;
-        plan.momentsClear = settings.msmQuantize16 ? glsl::gsMsmQuantize(glm::vec4(1.0f)) : glm::vec4(1.0f);
-        plan.depthDefines.push_back("GS_SHADOW_STORE_MOMENTS4");
-        return;
+GLsizei bytesPerTexel(GLenum format) {
+    switch (format) {
+    case GL_RG32F:
+    case GL_RGBA16:
+        return 8;
+    case GL_RGBA32F:
+        return 16;
+    default:
+        return 0;
     }
 }
 
@@ -107,7 +99,15 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
         plan.depthDefines.push_back("GS_SHADOW_STORE_GRADIENT");
     }
     addOptionDefines(settings, plan);
-    planMoments(settings, plan);
+    if (const MomentStore& moments = plan.traits->moments; moments.format) {
+        plan.momentsFormat = moments.format(settings);
+        plan.momentBytesPerTexel = static_cast<std::size_t>(bytesPerTexel(plan.momentsFormat));
+        plan.momentsClear = moments.farPlane(settings);
+        plan.depthDefines.push_back(moments.define);
+    }
+    if (plan.traits->shaderParameters) {
+        plan.shaderParameters = plan.traits->shaderParameters(settings);
+    }
     plan.depthFormat = glDepthFormat(settings.depthFormat);
     plan.depthBytesPerTexel = settings.depthFormat == DepthFormat::D16 ? 2 : 4;
     plan.offsetsCasters = plan.traits->offsetsCasters;

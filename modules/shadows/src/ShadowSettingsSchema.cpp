@@ -50,10 +50,13 @@ bool comparesInHardware(const S& s) {
     return sampler == MapSampler::CompareNearest || sampler == MapSampler::CompareLinear;
 }
 bool filtersMoments(const S& s) {
-    return traitsOf(s.technique).stores != MapContent::Depth;
+    return traitsOf(s.technique).moments.format != nullptr;
 }
 bool comparesFuzzily(const S& s) {
     return traitsOf(s.technique).fuzzyComparison;
+}
+bool chebyshevBound(const S& s) {
+    return traitsOf(s.technique).chebyshevBound;
 }
 bool jittered(const S& s) {
     return traitsOf(s.technique).jittered;
@@ -129,10 +132,10 @@ const std::vector<SettingRow>& rows() {
          filtersMoments},
         {"vsmMinimumVariance", "depth units squared", "minimum variance",
          "Smallest variance the Chebyshev bound uses.",
-         FloatSetting{&S::vsmMinimumVariance, {}, 0.0f, 1e-3f, "%.2e", true}, only<T::Vsm>},
+         FloatSetting{&S::vsmMinimumVariance, {}, 0.0f, 1e-3f, "%.2e", true}, chebyshevBound},
         {"lightBleedingReduction", "", "light-bleeding reduction",
          "Tail of the Chebyshev bound cut off (linstep).",
-         FloatSetting{&S::lightBleedingReduction, {.max = 0.95f}, 0.0f, 0.95f, "%.2f"}, only<T::Vsm>},
+         FloatSetting{&S::lightBleedingReduction, {.max = 0.95f}, 0.0f, 0.95f, "%.2f"}, chebyshevBound},
         {"msmMomentBias", "", "moment bias",
          "Bias of the moments towards (0, 0.63, 0, 0.63); more hides numerical trouble, leaks more light.",
          FloatSetting{&S::msmMomentBias, {.max = 0.5f}, 0.0f, 0.05f, "%.2e", true}, only<T::Msm>},

@@ -1,4 +1,6 @@
+#include <shadows/ShadowSettings.h>
 #include <shadows/ShadowTechniqueTraits.h>
+#include <shadows/VisibilityMath.h>
 
 namespace shadows {
 
@@ -7,7 +9,7 @@ namespace {
 using T = ShadowTechnique;
 using S = MapSampler;
 
-constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
+const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardCompare,
      .name = "hard",
      .summary = "one hardware comparison (sampler2DShadow, NEAREST) + constant bias (world units)",
@@ -95,7 +97,9 @@ constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "advanced shadow mapping reference, \"Variance Shadow Maps\"",
      .sampler = S::Moments,
      .defines = {"GS_SHADOW_VSM"},
-     .stores = MapContent::TwoMoments},
+     .moments = {"GS_SHADOW_STORE_MOMENTS2", [](const ShadowSettings&) -> GLenum { return GL_RG32F; },
+                 [](const ShadowSettings&) { return glm::vec4(1.0f); }},
+     .chebyshevBound = true},
     {.technique = T::Msm,
      .name = "msm",
      .summary = "4 moments, Hamburger bound via Cholesky with `msmMomentBias` towards (0, 0.63, 0, 0.63); "
@@ -103,7 +107,11 @@ constexpr std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "same, \"Moment Shadow Maps\"; Peters & Klein 2015",
      .sampler = S::Moments,
      .defines = {"GS_SHADOW_MSM"},
-     .stores = MapContent::FourMoments},
+     .moments = {"GS_SHADOW_STORE_MOMENTS4",
+                 [](const ShadowSettings& s) -> GLenum { return s.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F; },
+                 [](const ShadowSettings& s) {
+                     return s.msmQuantize16 ? glsl::gsMsmQuantize(glm::vec4(1.0f)) : glm::vec4(1.0f);
+                 }}},
     {.technique = T::JitteredPcf,
      .name = "pcf-jittered",
      .summary = "`jitterTaps` (8..64) offsets from a stratified 32×32×(taps/2) jitter texture, two offsets "

@@ -38,6 +38,9 @@ struct ShadowPlan {
     /// What empty moments texels hold: the far plane's moments in the stored basis.
     glm::vec4 momentsClear{1.0f};
 
+    /// The technique's own shader parameters (gsShadowTechniqueParameters).
+    glm::vec4 shaderParameters{0.0f};
+
     /// Polygon offset on the casters (slopeScale, slopeUnits).
     bool offsetsCasters = false;
     /// The stratified jitter texture of jittered PCF is bound.

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <epoxy/gl.h>
+#include <glm/vec4.hpp>
+
 #include <array>
 #include <cstddef>
 #include <span>
@@ -37,11 +40,17 @@ enum class MapSampler {
     Moments,        ///< trilinear sampler2D over the blurred, mipmapped moments target (VSM, MSM)
 };
 
-/// @brief What the shadow pass stores per texel besides the depth buffer.
-enum class MapContent {
-    Depth,       ///< nothing more (a gradient target is added where the settings ask for stored derivatives)
-    TwoMoments,  ///< (z, z²) in RG32F, filtered
-    FourMoments, ///< (z, z², z³, z⁴) in RGBA32F, or RGBA16 through the optimised basis, filtered
+struct ShadowSettings;
+
+/// @brief The filtered moments a technique's shadow pass stores per texel besides the depth buffer: blurred,
+/// mipmapped, and read through MapSampler::Moments.
+struct MomentStore {
+    /// Depth-pass define under which the technique's file defines gsShadowStore(depth).
+    std::string_view define;
+    /// Colour format of the moments target for these settings (e.g. GL_RGBA16 when MSM quantises).
+    GLenum (*format)(const ShadowSettings&);
+    /// What empty texels hold: the far plane (depth 1) as stored.
+    glm::vec4 (*farPlane)(const ShadowSettings&);
 };
 
 /// @brief What a technique needs, whatever its options: one row per technique (techniqueTable()).
@@ -59,7 +68,11 @@ struct ShadowTechniqueTraits {
     /// gsShadowSample_<Technique> in shaders/shadows/techniques/: its family's, and the technique's own where
     /// a family shares code.
     std::array<std::string_view, 2> defines = {};
-    MapContent stores = MapContent::Depth;
+    /// The filtered moments the shadow pass stores; none (a null format) for depth-only maps.
+    MomentStore moments = {};
+    /// The technique's own parameters for its shader function (gsShadowTechniqueParameters), from the
+    /// settings; null when it has none beyond the shared block.
+    glm::vec4 (*shaderParameters)(const ShadowSettings&) = nullptr;
     /// Reads a per-fragment depth gradient (ShadowSettings::gradientSource applies).
     bool readsPointGradient = false;
     /// Uses the PCF tap pattern (pcfLayout, pcfTaps, pcfRadius, pcfRotate apply).
@@ -70,6 +83,9 @@ struct ShadowTechniqueTraits {
     bool fuzzyComparison = false;
     /// Takes its taps from the stratified jitter texture.
     bool jittered = false;
+    /// Bounds visibility by Chebyshev's inequality on filtered moments (vsmMinimumVariance and
+    /// lightBleedingReduction apply).
+    bool chebyshevBound = false;
 };
 
 /// @brief Every technique's row, in ShadowTechnique order.
