@@ -263,6 +263,42 @@ TEST(FilteredShadowMathTest, ChebyshevMatchesTheClosedFormBound) {
     EXPECT_LT(g::gsChebyshevVisibility(glm::vec2(0.5f, 0.25f), 0.6f, 0.0f, 0.0f), 1e-20f);
 }
 
+TEST(FilteredShadowMathTest, EvsmCutsTheLightBleedingOfVsm) {
+    // Half the filter region at depth 0.2, half at 0.5; a receiver at 0.6 is behind both. VSM's bound still
+    // lets a third of the light through; the exponential warps leave under 1 %.
+    const glm::vec2 exponents(40.0f, 5.0f);
+    const glm::vec4 evsm = 0.5f * (g::gsEvsmMoments(0.2f, exponents) + g::gsEvsmMoments(0.5f, exponents));
+    const glm::vec2 vsm(0.35f, 0.5f * (0.04f + 0.25f));
+    EXPECT_GT(g::gsChebyshevVisibility(vsm, 0.6f, 1e-6f, 0.0f), 0.25f);
+    EXPECT_LT(g::gsEvsmVisibility(evsm, 0.6f, exponents, 1e-6f, 0.0f), 0.01f);
+}
+
+TEST(FilteredShadowMathTest, EvsmSeesItsOwnDepthAndTheFarPlaneAsLit) {
+    const glm::vec2 exponents(40.0f, 5.0f);
+    for (const float depth : {0.0f, 0.3f, 0.7f, 0.999f}) {
+        EXPECT_EQ(g::gsEvsmVisibility(g::gsEvsmMoments(depth, exponents), depth, exponents, 1e-6f, 0.2f),
+                  1.0f);
+        // A cleared texel holds the far plane: nothing in front of it is shadowed.
+        EXPECT_EQ(g::gsEvsmVisibility(g::gsEvsmMoments(1.0f, exponents), depth, exponents, 1e-6f, 0.2f),
+                  1.0f);
+    }
+    // Well behind a single occluder: shadowed.
+    EXPECT_LT(g::gsEvsmVisibility(g::gsEvsmMoments(0.4f, exponents), 0.5f, exponents, 1e-6f, 0.2f), 0.01f);
+}
+
+TEST(FilteredShadowMathTest, EvsmIsFiniteAndBoundedAtTheLargestExponents) {
+    const glm::vec2 exponents(42.0f, 42.0f);
+    for (float occluder = 0.0f; occluder <= 1.0f; occluder += 0.125f) {
+        const glm::vec4 moments =
+            0.5f * (g::gsEvsmMoments(occluder, exponents) + g::gsEvsmMoments(1.0f, exponents));
+        ASSERT_TRUE(std::isfinite(moments.y) && std::isfinite(moments.w)) << occluder;
+        for (float depth = 0.0f; depth <= 1.0f; depth += 0.0625f) {
+            const float v = g::gsEvsmVisibility(moments, depth, exponents, 1e-6f, 0.0f);
+            ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << occluder << " " << depth << " " << v;
+        }
+    }
+}
+
 TEST(FilteredShadowMathTest, MsmRecoversATwoDepthMixture) {
     // 30 % of the filter region at depth 0.3, 70 % at 0.7.
     const glm::vec4 moments = 0.3f * g::gsMsmMoments(0.3f) + 0.7f * g::gsMsmMoments(0.7f);

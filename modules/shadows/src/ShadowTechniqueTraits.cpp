@@ -9,6 +9,10 @@ namespace {
 using T = ShadowTechnique;
 using S = MapSampler;
 
+glm::vec2 evsmExponents(const ShadowSettings& settings) {
+    return {settings.evsmPositiveExponent, settings.evsmNegativeExponent};
+}
+
 const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardCompare,
      .name = "hard",
@@ -112,6 +116,18 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
                  [](const ShadowSettings& s) {
                      return s.msmQuantize16 ? glsl::gsMsmQuantize(glm::vec4(1.0f)) : glm::vec4(1.0f);
                  }}},
+    {.technique = T::Evsm,
+     .name = "evsm",
+     .summary = "exponential variance shadow map: depth warped to exp(c+ d) and -exp(-c- d) "
+                "(`evsmPositiveExponent`, `evsmNegativeExponent`), both warps and their squares in RGBA32F, "
+                "filtered like `vsm`'s moments; Chebyshev's bound on each warp, the smaller one wins",
+     .reference = "Lauritzen & McCool, \"Layered variance shadow maps\", GI 2008, exponential warping",
+     .sampler = S::Moments,
+     .defines = {"GS_SHADOW_EVSM"},
+     .moments = {"GS_SHADOW_STORE_EVSM", [](const ShadowSettings&) -> GLenum { return GL_RGBA32F; },
+                 [](const ShadowSettings& s) { return glsl::gsEvsmMoments(1.0f, evsmExponents(s)); }},
+     .shaderParameters = [](const ShadowSettings& s) { return glm::vec4(evsmExponents(s), 0.0f, 0.0f); },
+     .chebyshevBound = true},
     {.technique = T::JitteredPcf,
      .name = "pcf-jittered",
      .summary = "`jitterTaps` (8..64) offsets from a stratified 32×32×(taps/2) jitter texture, two offsets "

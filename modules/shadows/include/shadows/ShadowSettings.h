@@ -103,6 +103,10 @@ struct ShadowSettings {
     /// Msm: store the moments in 16-bit unorm through the optimised basis (64 bits per texel) instead of 4 x
     /// 32-bit float. Default false.
     bool msmQuantize16 = false;
+    /// Evsm: exponent c+ of the positive warp exp(c+ d). Default 40.
+    float evsmPositiveExponent = 40.0f;
+    /// Evsm: exponent c- of the negative warp -exp(-c- d). Default 5.
+    float evsmNegativeExponent = 5.0f;
     /// JitteredPcf: taps, even, 8..64 (two per jitter texel). Default 32.
     int jitterTaps = 32;
     /// JitteredPcf: test taps taken before deciding whether the pixel needs the full kernel, even, 0 (always

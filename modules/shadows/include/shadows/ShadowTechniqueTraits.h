@@ -26,6 +26,7 @@ enum class ShadowTechnique {
     NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
     Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
     Msm,         ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
+    Evsm,        ///< exponential variance shadow map: two warped depths and their squares, Chebyshev on each
     JitteredPcf, ///< PCF over a stratified jitter texture, optional early-out on a few test taps
 };
 
