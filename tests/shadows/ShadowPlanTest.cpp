@@ -14,16 +14,10 @@ bool has(const std::vector<std::string_view>& defines, std::string_view define) 
     return std::count(defines.begin(), defines.end(), define) == 1;
 }
 
-ShadowSettings with(ShadowTechnique technique) {
-    ShadowSettings settings;
-    settings.technique = technique;
-    return settings;
-}
-
 } // namespace
 
 TEST(ShadowPlanTest, DefinesFollowOptionsOnlyWhereTheyApply) {
-    ShadowSettings settings = with(ShadowTechnique::HardCompare);
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::HardCompare};
     settings.pcfRotate = true; // no pattern: no rotation variant
     ShadowPlan plan = ShadowPlan::resolve(settings);
     EXPECT_FALSE(has(plan.lightingDefines, "GS_SHADOW_ROTATE"));
@@ -44,7 +38,7 @@ TEST(ShadowPlanTest, DefinesFollowOptionsOnlyWhereTheyApply) {
 }
 
 TEST(ShadowPlanTest, ReceiverPlanePerTapComparesInHardwareOverThePattern) {
-    ShadowSettings settings = with(ShadowTechnique::ReceiverPlaneBias);
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::ReceiverPlaneBias};
     EXPECT_EQ(ShadowPlan::resolve(settings).sampler, MapSampler::DepthLinear);
     EXPECT_FALSE(ShadowPlan::resolve(settings).usesTapPattern);
     settings.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
@@ -55,7 +49,7 @@ TEST(ShadowPlanTest, ReceiverPlanePerTapComparesInHardwareOverThePattern) {
 }
 
 TEST(ShadowPlanTest, QuantisedMomentsAreDeclaredOnceForBothPasses) {
-    ShadowSettings settings = with(ShadowTechnique::Msm);
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::Msm};
     ShadowPlan plan = ShadowPlan::resolve(settings);
     EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RGBA32F));
     EXPECT_EQ(plan.momentBytesPerTexel, 16u);
@@ -71,14 +65,14 @@ TEST(ShadowPlanTest, QuantisedMomentsAreDeclaredOnceForBothPasses) {
 }
 
 TEST(ShadowPlanTest, DepthFormatsAndCasterOffsets) {
-    ShadowSettings settings = with(ShadowTechnique::SlopeScaledBias);
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::SlopeScaledBias};
     settings.depthFormat = DepthFormat::D16;
     ShadowPlan plan = ShadowPlan::resolve(settings);
     EXPECT_EQ(plan.depthFormat, static_cast<GLenum>(GL_DEPTH_COMPONENT16));
     EXPECT_EQ(plan.depthBytesPerTexel, 2u);
     EXPECT_TRUE(plan.offsetsCasters);
     EXPECT_FALSE(plan.needsJitterTexture);
-    settings = with(ShadowTechnique::JitteredPcf);
+    settings = ShadowSettings{.technique = ShadowTechnique::JitteredPcf};
     settings.depthFormat = DepthFormat::D32F;
     plan = ShadowPlan::resolve(settings);
     EXPECT_EQ(plan.depthFormat, static_cast<GLenum>(GL_DEPTH_COMPONENT32F));
