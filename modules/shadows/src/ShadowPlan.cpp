@@ -63,7 +63,7 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     }
 }
 
-GLsizei bytesPerTexel(GLenum format) {
+std::size_t bytesPerTexel(GLenum format) {
     switch (format) {
     case GL_RG32F:
     case GL_RGBA16:
@@ -101,7 +101,7 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     addOptionDefines(settings, plan);
     if (const MomentStore& moments = plan.traits->moments; moments.format) {
         plan.momentsFormat = moments.format(settings);
-        plan.momentBytesPerTexel = static_cast<std::size_t>(bytesPerTexel(plan.momentsFormat));
+        plan.momentBytesPerTexel = bytesPerTexel(plan.momentsFormat);
         plan.momentsClear = moments.farPlane(settings);
         plan.depthDefines.push_back(moments.define);
     }
