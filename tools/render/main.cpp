@@ -46,19 +46,21 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --help           this text
 shadow settings (with --technique none they are checked and ignored):)";
 
-/// Text wrapped to lines of at most `width` characters, continuation lines indented by `indent`.
+/// `text` wrapped to lines of at most `width` characters that start `indent` characters in.
 std::string wrapped(const std::string& text, std::size_t width, std::size_t indent) {
     std::string out;
-    std::size_t lineStart = 0;
+    std::size_t lineLength = indent;
     std::istringstream words(text);
     for (std::string word; words >> word;) {
-        if (out.size() > lineStart && out.size() - lineStart + 1 + word.size() > width) {
+        if (lineLength > indent && lineLength + 1 + word.size() > width) {
             out += "\n" + std::string(indent, ' ');
-            lineStart = out.size() - indent;
-        } else if (out.size() > lineStart) {
+            lineLength = indent;
+        } else if (lineLength > indent) {
             out += ' ';
+            ++lineLength;
         }
         out += word;
+        lineLength += word.size();
     }
     return out;
 }
@@ -78,7 +80,7 @@ const std::string& usage() {
             std::string accepts = row.rangeText() + (row.name == "technique" ? ", none" : "");
             out +=
                 "\n" + head +
-                wrapped(row.labelWithUnit() + ": " + accepts + " [" + row.valueText(defaults) + "]", 90, 19);
+                wrapped(row.labelWithUnit() + ": " + accepts + " [" + row.valueText(defaults) + "]", 110, 19);
         }
         return out;
     }();
