@@ -53,17 +53,12 @@ shadows::ShadowTechnique parseTechnique(const std::string& option, const std::st
     return *technique;
 }
 
-/// The limits of the shadow map size, from the settings schema.
-shadows::IntLimits resolutionLimits() {
-    return *std::get<shadows::IntSetting>(shadows::findSetting("resolution")->field).limits({});
-}
-
 } // namespace
 
 std::string_view CommandLine::usage() {
     static const std::string text = [] {
         std::string usage = std::string(kUsage) + shadows::nameList<shadows::ShadowTechnique>() + ".";
-        const shadows::IntLimits limits = resolutionLimits();
+        const shadows::IntLimits limits = shadows::integerLimits("resolution");
         std::string range = std::to_string(limits.min) + ".." + std::to_string(limits.max);
         range.resize(28, ' '); // the defaults column
         const std::string placeholder = "%RESOLUTION%";
@@ -104,7 +99,8 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
         } else if (option == "--compare") {
             techniqueB = parseTechnique(option, value());
         } else if (option == "--shadow-size") {
-            shadowSize = parseInt(option, value(), resolutionLimits().min, resolutionLimits().max);
+            const shadows::IntLimits sizes = shadows::integerLimits("resolution");
+            shadowSize = parseInt(option, value(), sizes.min, sizes.max);
         } else if (option == "--settings") {
             line.settingsFile = value();
         } else if (option == "--size") {

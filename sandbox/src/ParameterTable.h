@@ -48,7 +48,7 @@ public:
 
     /// @brief Moves applicable integer fields to their nearest offered value where that makes invalid
     /// settings valid: switching the PCF layout can leave pcfTaps outside the new layout's range. Valid
-    /// values the sliders do not offer (e.g. a 16384 map from a file) are kept.
+    /// values the sliders do not offer (e.g. a 3000-texel map from a file) are kept.
     static void repairIntegers(shadows::ShadowSettings& settings);
 
     /// @brief The offered value nearest to `value` (`values` ascending, not empty).

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <stdexcept>
 
 using namespace shadows;
 
@@ -85,6 +86,15 @@ TEST(ShadowSettingsSchemaTest, OfferedIntegersAreTheAcceptedOnes) {
     const IntLimits sizes{.min = 64, .max = 512, .powersOfTwo = true};
     EXPECT_EQ(sizes.offered(), (std::vector<int>{64, 128, 256, 512}));
     EXPECT_TRUE(sizes.contains(100)) << "powers of two are what is offered, not what is accepted";
+}
+
+TEST(ShadowSettingsSchemaTest, IntegerLimitsForCommandLines) {
+    EXPECT_EQ(integerLimits("resolution").max, 16384);
+    EXPECT_EQ(integerLimits("pcfTaps").max, 8);
+    EXPECT_EQ(integerLimits("pcfTaps", ShadowSettings{.pcfLayout = TapLayout::Poisson}).max, 64);
+    EXPECT_THROW(integerLimits("pcfRadius"), std::logic_error);
+    EXPECT_THROW(integerLimits("pcfTaps", ShadowSettings{.pcfLayout = TapLayout::Circular8}),
+                 std::logic_error);
 }
 
 TEST(ShadowSettingsSchemaTest, DocsSettingsTableIsGenerated) {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace shadows {
 
@@ -307,6 +308,16 @@ const SettingRow* findSetting(std::string_view name) {
         }
     }
     return nullptr;
+}
+
+IntLimits integerLimits(std::string_view name, const ShadowSettings& settings) {
+    const SettingRow* row = findSetting(name);
+    const auto* integer = row ? std::get_if<IntSetting>(&row->field) : nullptr;
+    const std::optional<IntLimits> limits = integer ? integer->limits(settings) : std::nullopt;
+    if (!limits) {
+        throw std::logic_error("shadow settings: '" + std::string(name) + "' has no integer limits here");
+    }
+    return *limits;
 }
 
 std::string settingsMarkdownTable() {

@@ -107,6 +107,11 @@ std::span<const SettingRow> settingsSchema();
 /// @brief The row named `name` (a settings-file name), null if there is none.
 const SettingRow* findSetting(std::string_view name);
 
+/// @brief The limits of integer setting `name` for `settings` (e.g. "pcfTaps" for their layout), for tools
+/// that take the value on their command line. Throws std::logic_error for a name that is no constrained
+/// integer.
+IntLimits integerLimits(std::string_view name, const ShadowSettings& settings = {});
+
 /// @brief The settings table of docs/SHADOWS.md (Markdown), generated from the schema.
 std::string settingsMarkdownTable();
 
