@@ -9,8 +9,7 @@ bash tools/setup.sh
 cmake --preset default >/dev/null
 cmake --build --preset default --target gs-render gs-corpus
 render=./build/bin/gs-render
-techniques=(hard slope-scaled hw-pcf pcf gsm pcf-gsm-naive pcf-gsm-point pcf-gsm-average pcf-gsm-quadratic
-            receiver-plane normal-offset)
+mapfile -t techniques < <("$render" --list-techniques)
 for technique in "${techniques[@]}"; do
     "$render" --scene knob --technique "$technique" --out "$out/knob/$technique"
 done

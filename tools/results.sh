@@ -27,8 +27,8 @@ rm -rf "$work"
     --config "naive-circular8:technique=pcf-gsm-naive,pcfLayout=circular8,pcfRadius=1" \
     --out "$work/reproduction"
 
-# 3. Filtered families: VSM versus MSM light leaking, and early-out speed versus the same jittered kernel.
-"$bench" --scene knob --scene thin-shell --scene spheres --techniques vsm,msm --resolutions 1024 --frames 7 \
+# 3. Filtered families: VSM, EVSM and MSM light leaking, and early-out speed versus the same jittered kernel.
+"$bench" --scene knob --scene thin-shell --scene spheres --techniques vsm,evsm,msm --resolutions 1024 --frames 7 \
     --config "msm-16bit:technique=msm,msmQuantize16=true,resolution=1024" \
     --config "vsm-no-reduction:technique=vsm,lightBleedingReduction=0,resolution=1024" \
     --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,constantBias=0.12,resolution=1024" \

@@ -5,7 +5,7 @@
 #include "ParameterTable.h"
 #include "SandboxError.h"
 
-#include <shadows/ShadowTechniqueTraits.h>
+#include <shadows/ShadowSettingsSchema.h>
 
 #include <string>
 
@@ -21,7 +21,7 @@ Explore shadow techniques side by side: a window with controls, or --headless to
   --level N         subdivision level of every subdivided mesh, -1..6 (-1: the file's) [-1]
   --technique NAME  technique of side A; without --compare the whole view is A        [pcf-gsm-point]
   --compare NAME    technique of side B, right of the divider (split screen)         [pcf-gsm-average]
-  --shadow-size N   shadow map resolution of both sides, 64..16384                   [2048]
+  --shadow-size N   shadow map resolution of both sides, %RESOLUTION%
   --settings FILE   sandbox settings JSON (docs/SANDBOX.md); the options above override it
   --size WxH        window or image size, 1..16384 each                              [1280x720]
   --frames N        headless: frames to render, the last is written [1];
@@ -44,18 +44,11 @@ int parseInt(const std::string& option, const std::string& text, int low, int hi
     }
 }
 
-std::string techniqueList() {
-    std::string list;
-    for (const shadows::ShadowTechniqueTraits& traits : shadows::techniqueTable()) {
-        list += (list.empty() ? "" : ", ") + std::string(traits.name);
-    }
-    return list;
-}
-
 shadows::ShadowTechnique parseTechnique(const std::string& option, const std::string& name) {
     const auto technique = shadows::techniqueFromString(name);
     if (!technique) {
-        throw SandboxError(option + ": unknown technique '" + name + "' (" + techniqueList() + ")");
+        throw SandboxError(option + ": unknown technique '" + name + "' (" +
+                           shadows::nameList<shadows::ShadowTechnique>() + ")");
     }
     return *technique;
 }
@@ -63,7 +56,16 @@ shadows::ShadowTechnique parseTechnique(const std::string& option, const std::st
 } // namespace
 
 std::string_view CommandLine::usage() {
-    static const std::string text = std::string(kUsage) + techniqueList() + ".";
+    static const std::string text = [] {
+        std::string usage = std::string(kUsage) + shadows::nameList<shadows::ShadowTechnique>() + ".";
+        const shadows::IntLimits limits = shadows::integerLimits("resolution");
+        std::string range = std::to_string(limits.min) + ".." + std::to_string(limits.max);
+        range.resize(28, ' '); // the defaults column
+        const std::string placeholder = "%RESOLUTION%";
+        usage.replace(usage.find(placeholder), placeholder.size(),
+                      range + "[" + std::to_string(shadows::ShadowSettings{}.resolution) + "]");
+        return usage;
+    }();
     return text;
 }
 
@@ -97,7 +99,8 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
         } else if (option == "--compare") {
             techniqueB = parseTechnique(option, value());
         } else if (option == "--shadow-size") {
-            shadowSize = parseInt(option, value(), 64, 16384);
+            const shadows::IntLimits sizes = shadows::integerLimits("resolution");
+            shadowSize = parseInt(option, value(), sizes.min, sizes.max);
         } else if (option == "--settings") {
             line.settingsFile = value();
         } else if (option == "--size") {

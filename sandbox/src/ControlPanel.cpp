@@ -3,7 +3,7 @@
 #include "ParameterTable.h"
 #include "SandboxError.h"
 
-#include <shadows/ShadowTechniqueTraits.h>
+#include <shadows/ShadowPlan.h>
 
 #include <content/ContentError.h>
 
@@ -27,13 +27,12 @@ void tooltip(std::string_view text) {
     }
 }
 
-bool combo(const char* label, int& index, const std::vector<std::string>& options) {
+bool combo(const char* label, int& index, const std::vector<std::string_view>& options) {
     bool changed = false;
-    const char* preview =
-        index >= 0 && index < static_cast<int>(options.size()) ? options[index].c_str() : "?";
-    if (ImGui::BeginCombo(label, preview)) {
+    const std::string preview(index >= 0 && index < static_cast<int>(options.size()) ? options[index] : "?");
+    if (ImGui::BeginCombo(label, preview.c_str())) {
         for (int i = 0; i < static_cast<int>(options.size()); ++i) {
-            if (ImGui::Selectable(options[i].c_str(), i == index)) {
+            if (ImGui::Selectable(std::string(options[i]).c_str(), i == index)) {
                 changed = changed || i != index;
                 index = i;
             }
@@ -43,18 +42,18 @@ bool combo(const char* label, int& index, const std::vector<std::string>& option
     return changed;
 }
 
-/// Draws the control of one table row; returns true when the value changed.
-bool drawRow(const ParameterTable::Row& row, shadows::ShadowSettings& settings) {
-    const std::string label(row.label);
+/// Draws the control of one schema row; returns true when the value changed.
+bool drawRow(const shadows::SettingRow& row, shadows::ShadowSettings& settings) {
+    const std::string label = row.labelWithUnit();
     bool changed = false;
-    if (const auto* real = std::get_if<ParameterTable::FloatField>(&row.field)) {
+    if (const auto* real = std::get_if<shadows::FloatSetting>(&row.field)) {
         changed =
-            ImGui::SliderFloat(label.c_str(), &(settings.*real->member), real->range.min, real->range.max,
+            ImGui::SliderFloat(label.c_str(), &(settings.*real->member), real->sliderMin, real->sliderMax,
                                real->format, real->logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
-    } else if (const auto* integer = std::get_if<ParameterTable::IntField>(&row.field)) {
+    } else if (const auto* integer = std::get_if<shadows::IntSetting>(&row.field)) {
         // The slider moves through the offered values; it shows the value itself.
         int& value = settings.*integer->member;
-        const std::vector<int> values = integer->values(settings);
+        const std::vector<int> values = ParameterTable::offeredValues(*integer, settings);
         const int nearest = ParameterTable::nearest(values, value);
         int index = static_cast<int>(std::find(values.begin(), values.end(), nearest) - values.begin());
         const std::string shown = std::to_string(value);
@@ -64,11 +63,11 @@ bool drawRow(const ParameterTable::Row& row, shadows::ShadowSettings& settings) 
                 values[static_cast<std::size_t>(std::clamp(index, 0, static_cast<int>(values.size()) - 1))];
             changed = true;
         }
-    } else if (const auto* toggle = std::get_if<ParameterTable::ToggleField>(&row.field)) {
+    } else if (const auto* toggle = std::get_if<shadows::BoolSetting>(&row.field)) {
         changed = ImGui::Checkbox(label.c_str(), &(settings.*toggle->member));
-    } else if (const auto* choice = std::get_if<ParameterTable::ChoiceField>(&row.field)) {
+    } else if (const auto* choice = std::get_if<shadows::EnumSetting>(&row.field)) {
         int index = choice->get(settings);
-        if (combo(label.c_str(), index, choice->options)) {
+        if (combo(label.c_str(), index, choice->names)) {
             choice->set(settings, index);
             changed = true;
         }
@@ -78,9 +77,9 @@ bool drawRow(const ParameterTable::Row& row, shadows::ShadowSettings& settings) 
 }
 
 std::string uses(const shadows::ShadowSettings& settings) {
-    const shadows::ShadowTechniqueTraits traits = shadows::techniqueTraits(settings);
+    const shadows::ShadowPlan plan = shadows::ShadowPlan::resolve(settings);
     std::string text;
-    switch (traits.sampler) {
+    switch (plan.sampler) {
     case shadows::MapSampler::CompareNearest:
         text = "hardware compare";
         break;
@@ -91,16 +90,16 @@ std::string uses(const shadows::ShadowSettings& settings) {
         text = "filtered depth";
         break;
     case shadows::MapSampler::Moments:
-        text = std::to_string(traits.moments) + " filtered moments";
+        text = plan.momentsFormat == GL_RG32F ? "2 filtered moments" : "4 filtered moments";
         break;
     }
-    if (traits.usesTapPattern) {
+    if (plan.usesTapPattern) {
         text += ", tap pattern";
     }
-    if (traits.readsPointGradient) {
+    if (plan.traits->readsPointGradient) {
         text += ", point gradient";
     }
-    if (traits.offsetsCasters) {
+    if (plan.offsetsCasters) {
         text += ", caster polygon offset";
     }
     return text;
@@ -264,18 +263,9 @@ void ControlPanel::drawView(Session& session) {
 void ControlPanel::drawSide(const char* id, shadows::ShadowSettings& settings) {
     ImGui::PushID(id);
     shadows::ShadowSettings edited = settings;
-    int technique = static_cast<int>(edited.technique);
-    std::vector<std::string> names;
-    for (const shadows::ShadowTechniqueTraits& traits : shadows::techniqueTable()) {
-        names.emplace_back(traits.name);
-    }
-    bool changed = false;
-    if (combo("technique", technique, names)) {
-        edited.technique = shadows::techniqueTable()[static_cast<std::size_t>(technique)].technique;
-        changed = true;
-    }
+    bool changed = drawRow(*shadows::findSetting("technique"), edited);
     ImGui::TextDisabled("uses: %s", uses(edited).c_str());
-    for (const ParameterTable::Row& row : ParameterTable::shadowRows()) {
+    for (const shadows::SettingRow& row : ParameterTable::shadowRows()) {
         if (row.applies(edited)) {
             changed |= drawRow(row, edited);
         }

@@ -1,12 +1,8 @@
 #pragma once
 
-#include <shadows/ShadowSettings.h>
+#include <shadows/ShadowSettingsSchema.h>
 
-#include <functional>
 #include <span>
-#include <string>
-#include <string_view>
-#include <variant>
 #include <vector>
 
 namespace sandbox {
@@ -20,8 +16,8 @@ struct Range {
     [[nodiscard]] constexpr bool contains(T value) const { return value >= min && value <= max; }
 };
 
-/// @brief The one table of every value the sandbox lets people edit: the ranges of its own settings, and one
-/// row per ShadowSettings field (its settings-file name, label, range and the techniques it applies to).
+/// @brief Every value the sandbox lets people edit: the ranges of its own settings, and the rows of the
+/// shadow settings schema (shadows::settingsSchema()).
 ///
 /// The UI draws its controls from this table. Sandbox settings files are checked against the k* ranges;
 /// shadow settings in files only have to pass ShadowSettings::validate, so a file may hold values beyond a
@@ -41,52 +37,18 @@ public:
     /// Orbit camera distance to its target, world units.
     static constexpr Range<float> kDistance{0.05f, 1000.0f};
 
-    /// @brief A float field edited with a slider.
-    struct FloatField {
-        float shadows::ShadowSettings::*member;
-        Range<float> range;
-        /// printf format of the slider's value.
-        const char* format;
-        /// Logarithmic slider (values spanning orders of magnitude).
-        bool logarithmic;
-    };
-    /// @brief An integer field edited with a slider over the values it may take.
-    struct IntField {
-        int shadows::ShadowSettings::*member;
-        /// The values offered, ascending; they may depend on other fields (pcfTaps on the layout).
-        std::function<std::vector<int>(const shadows::ShadowSettings&)> values;
-    };
-    /// @brief A bool field edited with a checkbox.
-    struct ToggleField {
-        bool shadows::ShadowSettings::*member;
-    };
-    /// @brief An enum field: options are the enum's values in declaration order, named as in settings files.
-    struct ChoiceField {
-        std::vector<std::string> options;
-        std::function<int(const shadows::ShadowSettings&)> get;
-        std::function<void(shadows::ShadowSettings&, int)> set;
-    };
+    /// @brief The shadow settings the UI edits: every row of shadows::settingsSchema() except the technique
+    /// (picked from shadows::techniqueTable()), in the schema's order.
+    [[nodiscard]] static std::span<const shadows::SettingRow> shadowRows();
 
-    /// @brief One editable ShadowSettings field.
-    struct Row {
-        /// Field name in settings files (shadows::settingsToJson).
-        std::string_view name;
-        /// Label shown in the UI, with its unit.
-        std::string_view label;
-        /// What the field does, shown as a tooltip.
-        std::string_view help;
-        std::variant<FloatField, IntField, ToggleField, ChoiceField> field;
-        /// Whether the field changes anything for these settings (their technique and options).
-        std::function<bool(const shadows::ShadowSettings&)> applies;
-    };
-
-    /// @brief Every ShadowSettings field except the technique (picked from shadows::techniqueTable()), in the
-    /// order the UI shows them.
-    [[nodiscard]] static std::span<const Row> shadowRows();
+    /// @brief The values the slider of an integer row offers for `settings`, ascending; the current value
+    /// alone where the row accepts any.
+    [[nodiscard]] static std::vector<int> offeredValues(const shadows::IntSetting& field,
+                                                        const shadows::ShadowSettings& settings);
 
     /// @brief Moves applicable integer fields to their nearest offered value where that makes invalid
     /// settings valid: switching the PCF layout can leave pcfTaps outside the new layout's range. Valid
-    /// values the sliders do not offer (e.g. a 16384 map from a file) are kept.
+    /// values the sliders do not offer (e.g. a 3000-texel map from a file) are kept.
     static void repairIntegers(shadows::ShadowSettings& settings);
 
     /// @brief The offered value nearest to `value` (`values` ascending, not empty).

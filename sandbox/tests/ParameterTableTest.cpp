@@ -17,7 +17,7 @@ namespace {
 
 std::set<std::string> shownRows(const ShadowSettings& settings) {
     std::set<std::string> names;
-    for (const ParameterTable::Row& row : ParameterTable::shadowRows()) {
+    for (const shadows::SettingRow& row : ParameterTable::shadowRows()) {
         if (row.applies(settings)) {
             names.emplace(row.name);
         }
@@ -41,7 +41,7 @@ TEST(ParameterTableTest, EveryShadowSettingsFieldButTheTechniqueHasOneRow) {
     }
     fields.erase("technique");
     std::multiset<std::string> rows;
-    for (const ParameterTable::Row& row : ParameterTable::shadowRows()) {
+    for (const shadows::SettingRow& row : ParameterTable::shadowRows()) {
         rows.emplace(row.name);
     }
     EXPECT_EQ(std::set<std::string>(rows.begin(), rows.end()), fields);
@@ -49,17 +49,18 @@ TEST(ParameterTableTest, EveryShadowSettingsFieldButTheTechniqueHasOneRow) {
 }
 
 TEST(ParameterTableTest, ChoiceOptionsAreTheSettingsFileNames) {
-    for (const ParameterTable::Row& row : ParameterTable::shadowRows()) {
-        const auto* choice = std::get_if<ParameterTable::ChoiceField>(&row.field);
+    for (const shadows::SettingRow& row : ParameterTable::shadowRows()) {
+        const auto* choice = std::get_if<shadows::EnumSetting>(&row.field);
         if (!choice) {
             continue;
         }
-        for (int index = 0; index < static_cast<int>(choice->options.size()); ++index) {
+        for (int index = 0; index < static_cast<int>(choice->names.size()); ++index) {
             ShadowSettings settings;
             choice->set(settings, index);
             EXPECT_EQ(choice->get(settings), index) << row.name;
             const auto json = nlohmann::json::parse(shadows::settingsToJson(settings));
-            EXPECT_EQ(json.at(std::string(row.name)), choice->options[static_cast<std::size_t>(index)])
+            EXPECT_EQ(json.at(std::string(row.name)),
+                      std::string(choice->names[static_cast<std::size_t>(index)]))
                 << row.name;
         }
     }
@@ -68,11 +69,13 @@ TEST(ParameterTableTest, ChoiceOptionsAreTheSettingsFileNames) {
 TEST(ParameterTableTest, DefaultsLieInsideTheRanges) {
     for (const ShadowTechnique technique : shadows::allTechniques()) {
         const ShadowSettings settings = with(technique);
-        for (const ParameterTable::Row& row : ParameterTable::shadowRows()) {
-            if (const auto* real = std::get_if<ParameterTable::FloatField>(&row.field)) {
-                EXPECT_TRUE(real->range.contains(settings.*real->member)) << row.name;
-            } else if (const auto* integer = std::get_if<ParameterTable::IntField>(&row.field)) {
-                const std::vector<int> values = integer->values(settings);
+        for (const shadows::SettingRow& row : ParameterTable::shadowRows()) {
+            if (const auto* real = std::get_if<shadows::FloatSetting>(&row.field)) {
+                const float value = settings.*real->member;
+                EXPECT_TRUE(real->valid.contains(value)) << row.name;
+                EXPECT_TRUE(value >= real->sliderMin && value <= real->sliderMax) << row.name;
+            } else if (const auto* integer = std::get_if<shadows::IntSetting>(&row.field)) {
+                const std::vector<int> values = ParameterTable::offeredValues(*integer, settings);
                 EXPECT_TRUE(std::is_sorted(values.begin(), values.end())) << row.name;
                 EXPECT_NE(std::find(values.begin(), values.end(), settings.*integer->member), values.end())
                     << row.name;
@@ -105,27 +108,27 @@ TEST(ParameterTableTest, RowsFollowTheTechnique) {
 
 TEST(ParameterTableTest, RepairIntegersFixesTapsAfterALayoutSwitchOnly) {
     ShadowSettings settings = with(ShadowTechnique::Pcf);
-    settings.resolution = 16384;
+    settings.resolution = 3000;
     settings.pcfTaps = 4;
     settings.pcfLayout = shadows::TapLayout::Poisson;
     ASSERT_FALSE(settings.validate().empty());
     ParameterTable::repairIntegers(settings);
     EXPECT_TRUE(settings.validate().empty());
     EXPECT_EQ(settings.pcfTaps, 8);
-    EXPECT_EQ(settings.resolution, 16384) << "a valid value beyond the slider is kept";
+    EXPECT_EQ(settings.resolution, 3000) << "a valid value the slider does not offer is kept";
 }
 
 TEST(ParameterTableTest, OfferedIntegersAreValid) {
     // Every value a slider offers is kept and gives valid settings (with the technique that shows the
     // slider).
     for (const ShadowTechnique technique : shadows::allTechniques()) {
-        for (const ParameterTable::Row& row : ParameterTable::shadowRows()) {
-            const auto* integer = std::get_if<ParameterTable::IntField>(&row.field);
+        for (const shadows::SettingRow& row : ParameterTable::shadowRows()) {
+            const auto* integer = std::get_if<shadows::IntSetting>(&row.field);
             ShadowSettings settings = with(technique);
             if (!integer || !row.applies(settings)) {
                 continue;
             }
-            for (const int value : integer->values(settings)) {
+            for (const int value : ParameterTable::offeredValues(*integer, settings)) {
                 // What the UI does after a slider moves: other integers follow (jitterTaps bounds
                 // earlyOutTestTaps).
                 ShadowSettings edited = settings;

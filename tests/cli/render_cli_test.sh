@@ -26,6 +26,15 @@ expect renders 0 "wrote .*knob.png" -- "$render" --out "$out" --size 160x120 --f
 grep -q '"timingMethod"' "$out/report.json" || { echo "FAIL report lacks timingMethod"; failures=$((failures + 1)); }
 ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; failures=$((failures + 1)); }
 
+expect noShadowsTakesShadowOptions 0 "wrote .*knob.png" -- "$render" --out "$out/none" --size 16x12 --frames 1 \
+    --technique none --shadow-size 512 --depth-format d16 --debug-view visibility
+grep -q '"shadowTechnique": "none"' "$out/none/report.json" || { echo "FAIL none rendered shadows"; failures=$((failures + 1)); }
+expect noShadowsStillChecksOptions 2 "--shadow-size: '8' is not an integer in \[64, 16384\]" -- \
+    "$render" --technique none --shadow-size 8
+expect unknownDepthFormat 2 "--depth-format: unknown value 'd8' \(d16, d24, d32f\)" -- "$render" --depth-format d8
+expect listsTechniques 0 "^hard$" -- "$render" --list-techniques
+[[ $("$render" --list-techniques | wc -l) -ge 14 ]] || { echo "FAIL --list-techniques too short"; failures=$((failures + 1)); }
+"$render" --help | grep -q -- "--list-techniques" || { echo "FAIL usage lacks --list-techniques"; failures=$((failures + 1)); }
 expect unknownOption 2 "unknown option '--bogus'" -- "$render" --bogus
 expect badSize 2 "--size: 'axb' is not WIDTHxHEIGHT|--size: 'a' is not an integer" -- "$render" --size axb
 expect zeroSize 2 "--size: '0' is not an integer in \[1, 16384\]" -- "$render" --size 0x10

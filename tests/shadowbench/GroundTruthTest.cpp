@@ -1,4 +1,6 @@
 // Ray-traced ground truth against closed-form shadows, and the metrics on synthetic images (no GL).
+#include "../support/TestScenes.h"
+
 #include <shadowbench/RayTracedVisibility.h>
 #include <shadowbench/ShadowMetrics.h>
 
@@ -43,14 +45,7 @@ GroundSamples groundGrid(float half, int n) {
 } // namespace
 
 TEST(GroundTruthTest, BoxOnPlaneMatchesTheClosedFormShadow) {
-    engine::Scene scene;
-    const auto ground = scene.create("ground");
-    scene.entity(ground).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(20, 1))};
-    const auto box = scene.create("box");
-    scene.entity(box).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(2))};
-    scene.entity(box).transform.translation = {0, 1, 0};
+    const engine::Scene scene = testsupport::boxOnPlane(20.0f, 2.0f);
     const RayTracedVisibility tracer(scene);
     const engine::FrameLight light = sun({-1.0f, -1.0f, -0.5f});
     const GroundSamples s = groundGrid(5.0f, 120);
@@ -63,16 +58,8 @@ TEST(GroundTruthTest, BoxOnPlaneMatchesTheClosedFormShadow) {
     std::size_t shadowed = 0;
     for (std::size_t i = 0; i < s.positions.size(); ++i) {
         const glm::vec3 p = s.positions[i];
-        float enter = 0.0f;
-        float exit = 1e30f;
-        for (int axis = 0; axis < 3; ++axis) {
-            const float low = axis == 1 ? 0.0f : -1.0f;
-            const float high = axis == 1 ? 2.0f : 1.0f;
-            const float t0 = (low - p[axis]) / toLight[axis];
-            const float t1 = (high - p[axis]) / toLight[axis];
-            enter = std::max(enter, std::min(t0, t1));
-            exit = std::min(exit, std::max(t0, t1));
-        }
+        const auto [enter, exit] =
+            testsupport::crossBox(p, toLight, {-1.0f, 0.0f, -1.0f}, {1.0f, 2.0f, 1.0f}, 0.0f);
         const bool expected = enter < exit;
         if (std::abs(enter - exit) < 1e-3f) {
             continue; // grazing the box's silhouette: either answer is exact to float precision
@@ -85,9 +72,7 @@ TEST(GroundTruthTest, BoxOnPlaneMatchesTheClosedFormShadow) {
 
 TEST(GroundTruthTest, SphereOverPlaneMatchesTheClosedFormShadow) {
     engine::Scene scene;
-    const auto ground = scene.create("ground");
-    scene.entity(ground).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(20, 1))};
+    testsupport::addGround(scene, 20.0f);
     const auto ball = scene.create("ball");
     scene.entity(ball).mesh =
         engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::sphere(1.0f, 96, 192))};

@@ -1,4 +1,4 @@
-// VSM, MSM (32-bit and 16-bit) and jittered PCF with early-out inside the engine.
+// VSM, EVSM, MSM (32-bit and 16-bit) and jittered PCF with early-out inside the engine.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>
@@ -74,6 +74,7 @@ TEST_P(FilteredShadowsGLTest, RendersKnobAndSpheresWithBoundedVisibility) {
 INSTANTIATE_TEST_SUITE_P(Techniques, FilteredShadowsGLTest,
                          testing::Values(FilteredCase{"vsm", ShadowTechnique::Vsm, false, 0},
                                          FilteredCase{"msm32", ShadowTechnique::Msm, false, 0},
+                                         FilteredCase{"evsm", ShadowTechnique::Evsm, false, 0},
                                          FilteredCase{"msm16", ShadowTechnique::Msm, true, 0},
                                          FilteredCase{"jittered", ShadowTechnique::JitteredPcf, false, 0},
                                          FilteredCase{"jitteredEarlyOut", ShadowTechnique::JitteredPcf, false,

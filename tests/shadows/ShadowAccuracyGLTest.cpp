@@ -3,8 +3,9 @@
 // llvmpipe (deterministic) with margin; see the table below.
 #include "ShadowMeasurement.h"
 
+#include "../support/TestScenes.h"
+
 #include <content/GltfLoader.h>
-#include <engine/Primitives.h>
 
 #include <gtest/gtest.h>
 
@@ -29,14 +30,7 @@ glm::vec3 sunDirection() {
 }
 
 engine::Scene boxOnPlane(engine::EntityId& camera) {
-    engine::Scene scene;
-    const auto ground = scene.create("ground");
-    scene.entity(ground).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(24.0f, 1))};
-    const auto box = scene.create("box");
-    scene.entity(box).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(2.0f))};
-    scene.entity(box).transform.translation = {0.0f, 1.0f, 0.0f};
+    engine::Scene scene = testsupport::boxOnPlane(24.0f, 2.0f);
     const auto sun = scene.create("sun");
     scene.entity(sun).light = engine::LightComponent{};
     scene.entity(sun).transform = engine::Transform::lookAt(-10.0f * sunDirection(), {0, 0, 0});
@@ -46,23 +40,10 @@ engine::Scene boxOnPlane(engine::EntityId& camera) {
     return scene;
 }
 
-/// Slab test: does the ray from `origin` towards the light hit the box?
+/// Does the ray from `origin` towards the light hit the box?
 bool boxOccludes(const glm::vec3& origin, const glm::vec3& toLight) {
-    float enter = 1e-4f;
-    float exit = 1e30f;
-    for (int axis = 0; axis < 3; ++axis) {
-        if (std::abs(toLight[axis]) < 1e-12f) {
-            if (origin[axis] < kBoxMin[axis] || origin[axis] > kBoxMax[axis]) {
-                return false;
-            }
-            continue;
-        }
-        float t0 = (kBoxMin[axis] - origin[axis]) / toLight[axis];
-        float t1 = (kBoxMax[axis] - origin[axis]) / toLight[axis];
-        enter = std::max(enter, std::min(t0, t1));
-        exit = std::min(exit, std::max(t0, t1));
-    }
-    return enter < exit;
+    const testsupport::BoxCrossing crossing = testsupport::crossBox(origin, toLight, kBoxMin, kBoxMax, 1e-4f);
+    return crossing.enter < crossing.exit;
 }
 
 /// Classifies lit/shadowed receivers facing the light, away from shadow edges by `band` world units.

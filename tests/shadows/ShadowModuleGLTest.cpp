@@ -1,10 +1,10 @@
 // The shadow module inside the engine: every technique x light type x depth format compiles and renders the
 // knob; resources and variants exist only for what the scene uses; the module also loads as a plugin.
 #include "../engine/GLTestContext.h"
+#include "../support/TestScenes.h"
 
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
-#include <engine/Primitives.h>
 #include <engine/RenderTarget.h>
 #include <shadows/ShadowModule.h>
 
@@ -187,14 +187,7 @@ TEST(ShadowModuleGLTest, DebugViewsCompileAndDiffer) {
 
 TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     glTestContext();
-    engine::Scene scene;
-    const auto ground = scene.create("ground");
-    scene.entity(ground).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(10, 1))};
-    const auto box = scene.create("box");
-    scene.entity(box).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(1))};
-    scene.entity(box).transform.translation = {0, 0.5f, 0};
+    engine::Scene scene = testsupport::boxOnPlane(10.0f, 1.0f);
     const auto camera = scene.create("camera");
     scene.entity(camera).camera = engine::CameraComponent{};
     scene.entity(camera).transform = engine::Transform::lookAt({0, 5, 6}, {0, 0, 0});
@@ -274,31 +267,17 @@ TEST(ShadowModuleGLTest, LoadsAsAPluginAndCastsShadows) {
     EXPECT_GT(darker, with.pixels.size() / 4 / 50); // the knob's shadow on the ground
 }
 
-TEST(ShadowSettingsTest, InvalidSettingsNameEveryBadField) {
+TEST(ShadowModuleGLTest, RefusesInvalidSettingsNamingEveryBadField) {
     ShadowSettings settings;
-    settings.resolution = 32;
-    settings.pcfRadius = -1.0f;
-    settings.fuzzyScale = std::nanf("");
-    settings.pcfTaps = 12;
-    const auto problems = settings.validate();
-    ASSERT_EQ(problems.size(), 4u);
+    settings.jitterTaps = 7;
+    settings.momentBlurRadius = 17;
     try {
         ShadowModule module(settings);
         FAIL();
     } catch (const std::invalid_argument& error) {
         const std::string message = error.what();
-        for (const char* field : {"resolution", "pcfRadius", "fuzzyScale", "pcfTaps"}) {
+        for (const char* field : {"jitterTaps", "momentBlurRadius"}) {
             EXPECT_NE(message.find(field), std::string::npos) << message;
         }
     }
-}
-
-TEST(ShadowSettingsTest, NamesRoundTrip) {
-    for (const ShadowTechnique technique : allTechniques()) {
-        EXPECT_EQ(techniqueFromString(toString(technique)), technique);
-    }
-    EXPECT_EQ(allTechniques().size(), kTechniqueCount);
-    EXPECT_FALSE(techniqueFromString("shadow-volumes"));
-    EXPECT_EQ(depthFormatFromString("d16"), DepthFormat::D16);
-    EXPECT_FALSE(depthFormatFromString("d8"));
 }

@@ -1,5 +1,4 @@
 // CPU tests of shaders/shadows/visibility.glsl (compiled as C++ through VisibilityMath.h).
-#include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/TapPattern.h>
 #include <shadows/VisibilityMath.h>
 
@@ -9,7 +8,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <set>
 
 using namespace shadows;
 namespace g = shadows::glsl;
@@ -251,53 +249,6 @@ TEST(VisibilityMathTest, BilinearBlendFollowsGatherOrder) {
     EXPECT_FLOAT_EQ(g::gsBilinear(v, {1, 1}), 0.2f);
 }
 
-TEST(TapPatternTest, RejectsBadParametersByName) {
-    EXPECT_THROW(TapPattern::make(TapLayout::Grid, 9, 1.0f), std::invalid_argument);
-    EXPECT_THROW(TapPattern::make(TapLayout::Poisson, 4, 1.0f), std::invalid_argument);
-    EXPECT_THROW(TapPattern::make(TapLayout::Grid, 4, 0.0f), std::invalid_argument);
-    EXPECT_THROW(TapPattern::make(TapLayout::Grid, 4, std::nanf("")), std::invalid_argument);
-}
-
-TEST(TapPatternTest, PoissonPatternIsDeterministicAndInsideTheRadius) {
-    const TapPattern a = TapPattern::make(TapLayout::Poisson, 32, 2.5f);
-    const TapPattern b = TapPattern::make(TapLayout::Poisson, 32, 2.5f);
-    EXPECT_EQ(a.offsets, b.offsets);
-    ASSERT_EQ(a.offsets.size(), 32u);
-    for (const glm::vec2& o : a.offsets) {
-        EXPECT_LE(glm::length(o), 2.5f + 1e-5f);
-    }
-}
-
-TEST(ShadowTechniqueTableTest, OneRowPerTechniqueInEnumOrder) {
-    const auto table = techniqueTable();
-    ASSERT_EQ(table.size(), kTechniqueCount);
-    ASSERT_EQ(allTechniques().size(), kTechniqueCount);
-    for (std::size_t i = 0; i < table.size(); ++i) {
-        EXPECT_EQ(static_cast<std::size_t>(table[i].technique), i);
-        EXPECT_FALSE(table[i].defines.empty()) << table[i].name;
-    }
-}
-
-TEST(ShadowTechniqueTableTest, DefinesFollowOptionsOnlyWhereTheyApply) {
-    ShadowSettings settings;
-    settings.technique = ShadowTechnique::HardCompare;
-    settings.pcfRotate = true; // no pattern: no rotation variant
-    auto defines = lightingDefines(settings);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_ROTATE"), 0);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_SAMPLER_COMPARE"), 1);
-
-    settings.technique = ShadowTechnique::Gsm;
-    settings.gradientSource = GradientSource::ScreenSpace;
-    defines = lightingDefines(settings);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_GRADIENT_SCREEN"), 1);
-    EXPECT_EQ(std::count(defines.begin(), defines.end(), "GS_SHADOW_SAMPLER_COMPARE"), 0);
-
-    settings.technique = ShadowTechnique::ReceiverPlaneBias;
-    settings.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
-    EXPECT_EQ(techniqueTraits(settings).sampler, MapSampler::CompareNearest);
-    EXPECT_TRUE(techniqueTraits(settings).usesTapPattern);
-}
-
 TEST(FilteredShadowMathTest, ChebyshevMatchesTheClosedFormBound) {
     // Mean 0.4, variance 0.01: at depth 0.6 the bound is 0.01 / (0.01 + 0.04) = 0.2.
     const glm::vec2 moments(0.4f, 0.01f + 0.16f);
@@ -310,6 +261,42 @@ TEST(FilteredShadowMathTest, ChebyshevMatchesTheClosedFormBound) {
     const float v = g::gsChebyshevVisibility(glm::vec2(0.5f, 0.25f), 0.5001f, 1e-6f, 0.0f);
     EXPECT_TRUE(std::isfinite(v) && v >= 0.0f && v <= 1.0f);
     EXPECT_LT(g::gsChebyshevVisibility(glm::vec2(0.5f, 0.25f), 0.6f, 0.0f, 0.0f), 1e-20f);
+}
+
+TEST(FilteredShadowMathTest, EvsmCutsTheLightBleedingOfVsm) {
+    // Half the filter region at depth 0.2, half at 0.5; a receiver at 0.6 is behind both. VSM's bound still
+    // lets a third of the light through; the exponential warps leave under 1 %.
+    const glm::vec2 exponents(40.0f, 5.0f);
+    const glm::vec4 evsm = 0.5f * (g::gsEvsmMoments(0.2f, exponents) + g::gsEvsmMoments(0.5f, exponents));
+    const glm::vec2 vsm(0.35f, 0.5f * (0.04f + 0.25f));
+    EXPECT_GT(g::gsChebyshevVisibility(vsm, 0.6f, 1e-6f, 0.0f), 0.25f);
+    EXPECT_LT(g::gsEvsmVisibility(evsm, 0.6f, exponents, 1e-6f, 0.0f), 0.01f);
+}
+
+TEST(FilteredShadowMathTest, EvsmSeesItsOwnDepthAndTheFarPlaneAsLit) {
+    const glm::vec2 exponents(40.0f, 5.0f);
+    for (const float depth : {0.0f, 0.3f, 0.7f, 0.999f}) {
+        EXPECT_EQ(g::gsEvsmVisibility(g::gsEvsmMoments(depth, exponents), depth, exponents, 1e-6f, 0.2f),
+                  1.0f);
+        // A cleared texel holds the far plane: nothing in front of it is shadowed.
+        EXPECT_EQ(g::gsEvsmVisibility(g::gsEvsmMoments(1.0f, exponents), depth, exponents, 1e-6f, 0.2f),
+                  1.0f);
+    }
+    // Well behind a single occluder: shadowed.
+    EXPECT_LT(g::gsEvsmVisibility(g::gsEvsmMoments(0.4f, exponents), 0.5f, exponents, 1e-6f, 0.2f), 0.01f);
+}
+
+TEST(FilteredShadowMathTest, EvsmIsFiniteAndBoundedAtTheLargestExponents) {
+    const glm::vec2 exponents(42.0f, 42.0f);
+    for (float occluder = 0.0f; occluder <= 1.0f; occluder += 0.125f) {
+        const glm::vec4 moments =
+            0.5f * (g::gsEvsmMoments(occluder, exponents) + g::gsEvsmMoments(1.0f, exponents));
+        ASSERT_TRUE(std::isfinite(moments.y) && std::isfinite(moments.w)) << occluder;
+        for (float depth = 0.0f; depth <= 1.0f; depth += 0.0625f) {
+            const float v = g::gsEvsmVisibility(moments, depth, exponents, 1e-6f, 0.0f);
+            ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << occluder << " " << depth << " " << v;
+        }
+    }
 }
 
 TEST(FilteredShadowMathTest, MsmRecoversATwoDepthMixture) {
@@ -361,39 +348,4 @@ TEST(FilteredShadowMathTest, QuantisedMomentsRoundTripWithinTheSixteenBitBound) 
             EXPECT_NEAR(back[c], exact[c], bound) << "z " << z << " moment " << c;
         }
     }
-}
-
-TEST(JitterTexelsTest, EveryTapStaysInItsStratumAndTestTapsSpread) {
-    const JitterTexels jitter = makeJitterTexels(32, 8);
-    ASSERT_EQ(jitter.pairs, 16);
-    ASSERT_EQ(jitter.texels.size(), 8u * 8u * 16u);
-    glm::ivec2 grid;
-    for (int tap = 0; tap < 32; ++tap) {
-        const glm::ivec2 stratum = jitterStratum(tap, 32, grid);
-        for (std::size_t pixel = 0; pixel < 64; ++pixel) {
-            const glm::u16vec4 texel = jitter.texels[static_cast<std::size_t>(tap / 2) * 64 + pixel];
-            const glm::vec2 point =
-                glm::vec2(tap % 2 == 0 ? texel.x : texel.z, tap % 2 == 0 ? texel.y : texel.w) / 65535.0f;
-            EXPECT_GE(point.x * static_cast<float>(grid.x), static_cast<float>(stratum.x) - 1e-3f);
-            EXPECT_LE(point.x * static_cast<float>(grid.x), static_cast<float>(stratum.x + 1) + 1e-3f);
-            EXPECT_GE(point.y * static_cast<float>(grid.y), static_cast<float>(stratum.y) - 1e-3f);
-            EXPECT_LE(point.y * static_cast<float>(grid.y), static_cast<float>(stratum.y + 1) + 1e-3f);
-        }
-    }
-    EXPECT_EQ(grid.x * grid.y, 32);
-    // The first 8 (test) taps use 8 distinct strata reaching both halves of the box in x and y.
-    std::set<std::pair<int, int>> cells;
-    glm::ivec2 low(100);
-    glm::ivec2 high(-1);
-    for (int tap = 0; tap < 8; ++tap) {
-        const glm::ivec2 s = jitterStratum(tap, 32, grid);
-        cells.insert({s.x, s.y});
-        low = glm::min(low, s);
-        high = glm::max(high, s);
-    }
-    EXPECT_EQ(cells.size(), 8u);
-    EXPECT_LT(low.x, grid.x / 2);
-    EXPECT_GE(high.x, grid.x / 2);
-    EXPECT_LT(low.y, grid.y / 2);
-    EXPECT_GE(high.y, grid.y / 2);
 }

@@ -9,6 +9,7 @@
 #include <engine/RenderTarget.h>
 
 #include <shadows/ShadowModule.h>
+#include <shadows/ShadowSettingsSchema.h>
 
 #include <algorithm>
 #include <chrono>
@@ -17,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <sys/resource.h>
@@ -39,33 +41,98 @@ struct Options {
 };
 
 constexpr const char* kUsage = R"(usage: gs-render [options]
-  --scene NAME     content scene (content/scenes/NAME.gltf) or a .gltf/.glb path [knob]
+  --scene NAME     content scene (content/scenes/NAME.gltf), corpus scene (corpus/NAME.glb) or a .gltf/.glb path [knob]
   --content DIR    content folder holding scenes/ and cages/      [the repository's content/]
   --level N        subdivision level for every subdivided mesh, 0..6 [each scene's own]
   --out DIR        folder for <scene>.png and report.json         [out]
   --size WxH       image size in pixels, 1..16384 each            [1024x768]
   --frames N       frames to time after one warm-up frame, 1..1000 [5]
   --module NAME    load engine module NAME (repeatable)
-  --technique NAME shadows with this technique (hard, slope-scaled, hw-pcf, pcf, gsm, pcf-gsm-naive,
-                   pcf-gsm-point, pcf-gsm-average, pcf-gsm-quadratic, receiver-plane, normal-offset, none)
-                                                                  [pcf-gsm-average]
-  --shadow-size N  shadow map resolution, 64..16384               [2048]
-  --depth-format F d16, d24 or d32f                               [d24]
-  --debug-view V   none, texels, gradient, bias, visibility, shadow-map [none]
   --chunk-triangles N  triangles per draw chunk, 1..16777216   [4096]
   --no-culling     draw chunks outside the view volume too
   --depth-prepass  lay down depth first, then shade with an EQUAL depth test
   --allocator A    tuned (mallopt on CPU rasterisers) or default  [tuned]
-  --help           this text)";
+  --list-techniques  print every shadow technique's name, one a line, and exit
+  --help           this text
+shadow settings (with --technique none they are checked and ignored):)";
+
+/// `text` wrapped to lines of at most `width` characters that start `indent` characters in.
+std::string wrapped(const std::string& text, std::size_t width, std::size_t indent) {
+    std::string out;
+    std::size_t lineLength = indent;
+    std::istringstream words(text);
+    for (std::string word; words >> word;) {
+        if (lineLength > indent && lineLength + 1 + word.size() > width) {
+            out += "\n" + std::string(indent, ' ');
+            lineLength = indent;
+        } else if (lineLength > indent) {
+            out += ' ';
+            ++lineLength;
+        }
+        out += word;
+        lineLength += word.size();
+    }
+    return out;
+}
+
+/// The usage text: the tool's own options, then the shadow settings that have an option in the schema.
+const std::string& usage() {
+    static const std::string text = [] {
+        std::string out = kUsage;
+        const shadows::ShadowSettings defaults;
+        for (const shadows::SettingRow& row : shadows::settingsSchema()) {
+            if (row.option.empty()) {
+                continue;
+            }
+            std::string head = "  " + std::string(row.option) +
+                               (std::holds_alternative<shadows::IntSetting>(row.field) ? " N" : " NAME");
+            head.resize(std::max<std::size_t>(head.size() + 1, 19), ' ');
+            std::string accepts = row.rangeText() + (row.name == "technique" ? ", none" : "");
+            out +=
+                "\n" + head +
+                wrapped(row.labelWithUnit() + ": " + accepts + " [" + row.valueText(defaults) + "]", 110, 19);
+        }
+        return out;
+    }();
+    return text;
+}
 
 [[noreturn]] void usageError(const std::string& message) {
-    std::cerr << "gs-render: " << message << "\n" << kUsage << "\n";
+    std::cerr << "gs-render: " << message << "\n" << usage() << "\n";
     std::exit(2);
+}
+
+/// Sets the schema field `row` from its command-line text (integers and choices are the only kinds with an
+/// option).
+void setShadowOption(shadows::ShadowSettings& settings, const shadows::SettingRow& row,
+                     const std::string& text) {
+    const std::string option(row.option);
+    if (const auto* integer = std::get_if<shadows::IntSetting>(&row.field)) {
+        const shadows::IntLimits limits = *integer->limits(settings);
+        settings.*integer->member = cli::integerIn(option, text, limits.min, limits.max);
+        return;
+    }
+    const auto& choice = std::get<shadows::EnumSetting>(row.field);
+    const auto name = std::find(choice.names.begin(), choice.names.end(), text);
+    if (name == choice.names.end()) {
+        throw std::invalid_argument(option + ": unknown value '" + text + "' (" + choice.nameList() + ")");
+    }
+    choice.set(settings, static_cast<int>(name - choice.names.begin()));
+}
+
+const shadows::SettingRow* shadowOption(std::string_view option) {
+    for (const shadows::SettingRow& row : shadows::settingsSchema()) {
+        if (!row.option.empty() && row.option == option) {
+            return &row;
+        }
+    }
+    return nullptr;
 }
 
 Options parse(int argc, char** argv) {
     Options options;
-    options.shadows = shadows::ShadowSettings{};
+    shadows::ShadowSettings settings;
+    bool shadowsOn = true;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> std::string {
@@ -75,7 +142,12 @@ Options parse(int argc, char** argv) {
             return argv[++i];
         };
         if (arg == "--help") {
-            std::cout << kUsage << "\n";
+            std::cout << usage() << "\n";
+            std::exit(0);
+        } else if (arg == "--list-techniques") {
+            for (const shadows::ShadowTechnique technique : shadows::allTechniques()) {
+                std::cout << shadows::toString(technique) << "\n";
+            }
             std::exit(0);
         } else if (arg == "--scene") {
             options.scene = value();
@@ -91,15 +163,11 @@ Options parse(int argc, char** argv) {
             options.frames = cli::integerIn("--frames", value(), 1, 1000);
         } else if (arg == "--module") {
             options.modules.push_back(value());
-        } else if (arg == "--technique") {
-            const std::string name = value();
-            if (name == "none") {
-                options.shadows.reset();
-            } else if (const auto technique = shadows::techniqueFromString(name);
-                       technique && options.shadows) {
-                options.shadows->technique = *technique;
-            } else if (!technique) {
-                usageError("--technique: unknown technique '" + name + "'");
+        } else if (const shadows::SettingRow* row = shadowOption(arg)) {
+            const std::string text = value();
+            shadowsOn = row->name != "technique" ? shadowsOn : text != "none";
+            if (row->name != "technique" || shadowsOn) {
+                setShadowOption(settings, *row, text);
             }
         } else if (arg == "--chunk-triangles") {
             options.chunkTriangles =
@@ -114,25 +182,12 @@ Options parse(int argc, char** argv) {
                 usageError("--allocator: '" + name + "' is not tuned or default");
             }
             options.tuneAllocator = name == "tuned";
-        } else if (arg == "--shadow-size" && options.shadows) {
-            options.shadows->resolution = cli::integerIn("--shadow-size", value(), 64, 16384);
-        } else if (arg == "--depth-format" && options.shadows) {
-            const std::string name = value();
-            const auto format = shadows::depthFormatFromString(name);
-            if (!format) {
-                usageError("--depth-format: unknown format '" + name + "' (d16, d24, d32f)");
-            }
-            options.shadows->depthFormat = *format;
-        } else if (arg == "--debug-view" && options.shadows) {
-            const std::string name = value();
-            const auto view = shadows::debugViewFromString(name);
-            if (!view) {
-                usageError("--debug-view: unknown view '" + name + "'");
-            }
-            options.shadows->debugView = *view;
         } else {
             usageError("unknown option '" + arg + "'");
         }
+    }
+    if (shadowsOn) {
+        options.shadows = settings;
     }
     return options;
 }

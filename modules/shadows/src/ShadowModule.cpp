@@ -1,5 +1,9 @@
+#include "JitterTexture.h"
+#include "ShadowBlock.h"
+#include "ShadowMapTarget.h"
+#include "ShadowSamplers.h"
+
 #include <shadows/ShadowModule.h>
-#include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/VisibilityMath.h>
 
 #include <engine/ForwardRenderer.h>
@@ -18,133 +22,22 @@ namespace shadows {
 
 namespace {
 
-constexpr int kMaxMaps = 4; // GS_SHADOW_MAX_MAPS in receiver.glsl
 const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
 const engine::ProgramDesc kBlurProgram{"shadows/fullscreen.vert", "shadows/blur.frag"};
 
-GLenum glDepthFormat(DepthFormat format) {
-    switch (format) {
-    case DepthFormat::D16:
-        return GL_DEPTH_COMPONENT16;
-    case DepthFormat::D24:
-        return GL_DEPTH_COMPONENT24;
-    case DepthFormat::D32F:
-        return GL_DEPTH_COMPONENT32F;
+/// Includes every embedded technique file (shaders/shadows/techniques/), so adding one needs no list.
+std::string techniqueIncludes() {
+    constexpr std::string_view kFolder = "shadows/techniques/";
+    std::string includes;
+    for (const engine::EmbeddedShaderFile& file : gsShadowShaders()) {
+        if (std::string_view(file.name).starts_with(kFolder)) {
+            includes += "#include \"" + std::string(file.name) + "\"\n";
+        }
     }
-    return GL_DEPTH_COMPONENT24;
-}
-
-std::size_t bytesPerDepthTexel(DepthFormat format) {
-    return format == DepthFormat::D16 ? 2 : 4;
-}
-
-/// Colour format of the moments target, or 0 when the technique stores none.
-GLenum momentsFormat(const ShadowSettings& settings) {
-    switch (techniqueTraits(settings).moments) {
-    case 2:
-        return GL_RG32F;
-    case 4:
-        return settings.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F;
-    default:
-        return 0;
-    }
-}
-
-std::size_t bytesPerMomentTexel(GLenum format) {
-    return format == GL_RG32F || format == GL_RGBA16 ? 8 : format == GL_RGBA32F ? 16 : 0;
-}
-
-GLsizei mipLevels(int resolution) {
-    GLsizei levels = 1;
-    while ((resolution >> levels) > 0) {
-        ++levels;
-    }
-    return levels;
-}
-
-engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filter, bool compare) {
-    GLuint name = 0;
-    glCreateSamplers(1, &name);
-    glSamplerParameteri(name, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
-    glSamplerParameteri(name, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
-    // Outside the map counts as unoccluded: a border at the far plane.
-    glSamplerParameteri(name, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(name, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    glSamplerParameterfv(name, GL_TEXTURE_BORDER_COLOR, border);
-    if (compare) {
-        glSamplerParameteri(name, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glSamplerParameteri(name, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL); // lit when reference <= stored
-    }
-    return engine::gl::GlObject<engine::gl::detail::deleteSampler>(name);
+    return includes;
 }
 
 } // namespace
-
-struct ShadowModule::ShadowMap {
-    ShadowMap(int resolution, DepthFormat format, bool withGradient, GLenum momentFormat)
-        : depth(glDepthFormat(format), glm::ivec2(resolution)), framebuffer("shadow map") {
-        framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
-        if (withGradient) {
-            gradient.emplace(GL_RG32F, glm::ivec2(resolution));
-            framebuffer.attach(GL_COLOR_ATTACHMENT0, *gradient);
-            framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        } else if (momentFormat != 0) {
-            // Moments are filtered: blurred at level 0, then mipmapped for trilinear lookups.
-            moments.emplace(momentFormat, glm::ivec2(resolution), mipLevels(resolution));
-            blurTemporary.emplace(momentFormat, glm::ivec2(resolution));
-            blurFramebuffer.emplace("shadow moments blur");
-            blurFramebuffer->attach(GL_COLOR_ATTACHMENT0, *blurTemporary);
-            blurFramebuffer->setDrawBuffers({GL_COLOR_ATTACHMENT0});
-            blurFramebuffer->check();
-            framebuffer.attach(GL_COLOR_ATTACHMENT0, *moments);
-            framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        } else {
-            framebuffer.setDrawBuffers({});
-        }
-        framebuffer.check();
-    }
-
-    int lightIndex = -1;
-    LightProjection projection;
-    engine::gl::Texture depth;
-    std::optional<engine::gl::Texture> gradient;
-    std::optional<engine::gl::Texture> moments;
-    std::optional<engine::gl::Texture> blurTemporary;
-    std::optional<engine::gl::Framebuffer> blurFramebuffer;
-    engine::gl::Framebuffer framebuffer;
-};
-
-struct ShadowModule::Samplers {
-    engine::gl::GlObject<engine::gl::detail::deleteSampler> compareNearest = makeSampler(GL_NEAREST, true);
-    engine::gl::GlObject<engine::gl::detail::deleteSampler> compareLinear = makeSampler(GL_LINEAR, true);
-    engine::gl::GlObject<engine::gl::detail::deleteSampler> depthLinear = makeSampler(GL_LINEAR, false);
-    engine::gl::GlObject<engine::gl::detail::deleteSampler> moments = [] {
-        auto sampler = makeSampler(GL_LINEAR, false);
-        // Trilinear over the mip chain; edges clamp (a quantised border would not be "far").
-        glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        return sampler;
-    }();
-};
-
-/// The jitter texture of JitteredPcf (soft shadows reference), made when the technique is first used.
-struct ShadowModule::Jitter {
-    explicit Jitter(int tapCount) : taps(tapCount) {
-        const JitterTexels texels = makeJitterTexels(tapCount);
-        GLuint name = 0;
-        glCreateTextures(GL_TEXTURE_3D, 1, &name);
-        texture = engine::gl::GlObject<engine::gl::detail::deleteTexture>(name);
-        glTextureStorage3D(name, 1, GL_RGBA16, texels.size, texels.size, texels.pairs);
-        glTextureSubImage3D(name, 0, 0, 0, 0, texels.size, texels.size, texels.pairs, GL_RGBA,
-                            GL_UNSIGNED_SHORT, texels.texels.data());
-        glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    int taps;
-    engine::gl::GlObject<engine::gl::detail::deleteTexture> texture;
-};
 
 ShadowModule::ShadowModule() : ShadowModule(ShadowSettings{}) {}
 
@@ -167,6 +60,7 @@ void ShadowModule::setSettings(const ShadowSettings& settings) {
         return;
     }
     settings_ = settings;
+    plan_ = ShadowPlan::resolve(settings_);
     pattern_ = settings_.tapPattern();
     dirty_ = true;
 }
@@ -174,13 +68,8 @@ void ShadowModule::setSettings(const ShadowSettings& settings) {
 ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
     stats.shadowMaps = static_cast<int>(maps_.size());
-    const auto texels =
-        static_cast<std::size_t>(settings_.resolution) * static_cast<std::size_t>(settings_.resolution);
-    const std::size_t momentBytes = bytesPerMomentTexel(momentsFormat(settings_));
     for (const auto& map : maps_) {
-        stats.bytes += texels * (bytesPerDepthTexel(settings_.depthFormat) + (map->gradient ? 8 : 0));
-        // Moments: the mip chain (4/3 of level 0) plus the blur's temporary level.
-        stats.bytes += map->moments ? texels * momentBytes * 4 / 3 + texels * momentBytes : 0;
+        stats.bytes += map->bytes(plan_);
     }
     return stats;
 }
@@ -197,6 +86,7 @@ std::optional<LightProjection> ShadowModule::lightProjection(int lightIndex) con
 void ShadowModule::attach(engine::ModuleHost& host) {
     host_ = &host;
     host.shaders().add(gsShadowShaders());
+    host.shaders().add("shadows/techniques.glsl", techniqueIncludes());
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         mapUnits_.push_back(host.reserveTextureUnit());
         gradientUnits_.push_back(host.reserveTextureUnit());
@@ -207,6 +97,7 @@ void ShadowModule::attach(engine::ModuleHost& host) {
 
 void ShadowModule::detach() {
     releaseResources();
+    shadowBlock_.reset();
     samplers_.reset();
     jitter_.reset();
     fullscreenVertexArray_.reset();
@@ -227,14 +118,9 @@ std::vector<engine::ShaderChunk> ShadowModule::shaderChunks() const {
             {"final_color", "shadows/chunk-debug", "#ifdef GS_SHADOWS\ngsShadowDebug(color);\n#endif"}};
 }
 
-bool ShadowModule::needsGradientTarget() const {
-    return techniqueTraits(settings_).readsPointGradient &&
-           settings_.gradientSource == GradientSource::StoredDerivatives;
-}
-
-engine::ShaderVariantKey ShadowModule::lightingKey() const {
+engine::ShaderVariantKey ShadowModule::variantKey(const std::vector<std::string_view>& defines) const {
     engine::ShaderVariantKey key = 0;
-    for (const std::string_view define : lightingDefines(settings_)) {
+    for (const std::string_view define : defines) {
         key |= host_->variantFlag(define);
     }
     return key;
@@ -244,7 +130,8 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
     frameIndex_ = frame.frameIndex;
     if (dirty_) {
         releaseResources();
-        lightingKey_ = lightingKey();
+        lightingKey_ = variantKey(plan_.lightingDefines);
+        depthKey_ = variantKey(plan_.depthDefines);
         dirty_ = false;
     }
     // World bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
@@ -253,7 +140,7 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         boxes.push_back(local.transformed(model));
     });
 
-    slotOfLight_.assign(engine::ForwardRenderer::kMaxLights, -1);
+    std::vector<int> slotOfLight(engine::ForwardRenderer::kMaxLights, -1);
     std::size_t used = 0;
     for (const engine::FrameLight& light : frame.lights) {
         if (!light.light.castsShadows || used == kMaxMaps) {
@@ -269,41 +156,33 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
             continue;
         }
         if (used == maps_.size()) {
-            maps_.push_back(std::make_unique<ShadowMap>(settings_.resolution, settings_.depthFormat,
-                                                        needsGradientTarget(), momentsFormat(settings_)));
+            maps_.push_back(std::make_unique<ShadowMapTarget>(settings_.resolution, plan_));
         }
         maps_[used]->lightIndex = light.index;
         maps_[used]->projection = projection;
-        slotOfLight_[static_cast<std::size_t>(light.index)] = static_cast<int>(used);
+        slotOfLight[static_cast<std::size_t>(light.index)] = static_cast<int>(used);
         ++used;
     }
     // Lights that stopped casting (or left the view) give their maps back.
     maps_.resize(used);
+    if (used > 0) {
+        uploadBlock(slotOfLight);
+    }
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     if (maps_.empty()) {
         return;
     }
-    const bool storeGradient = needsGradientTarget();
-    const int moments = techniqueTraits(settings_).moments;
-    engine::ShaderVariantKey depthKey = 0;
-    if (storeGradient) {
-        depthKey = host_->variantFlag("GS_SHADOW_STORE_GRADIENT");
-    } else if (moments > 0) {
-        depthKey = host_->variantFlag(moments == 2 ? "GS_SHADOW_STORE_MOMENTS2" : "GS_SHADOW_STORE_MOMENTS4");
-        if (moments == 4 && settings_.msmQuantize16) {
-            depthKey |= host_->variantFlag("GS_SHADOW_MSM_QUANTIZED");
-        }
-    }
-    const engine::gl::Program& program = host_->programs().get(kDepthProgram, depthKey);
+    const engine::gl::Program& program = host_->programs().get(kDepthProgram, depthKey_);
     program.use();
+    glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);
     glCullFace(settings_.casterFaces == CasterFaces::Front ? GL_BACK : GL_FRONT);
-    if (techniqueTraits(settings_).offsetsCasters) {
+    if (plan_.offsetsCasters) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
     }
@@ -312,15 +191,11 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         map->framebuffer.bind();
         glViewport(0, 0, settings_.resolution, settings_.resolution);
         glClearDepth(1.0);
-        if (storeGradient) {
+        if (map->gradient) {
             const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
             glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, zero);
         } else if (map->moments) {
-            // Empty texels hold the moments of the far plane (depth 1), in the stored basis.
-            const glm::vec4 far = settings_.msmQuantize16 && moments == 4
-                                      ? glsl::gsMsmQuantize(glm::vec4(1.0f))
-                                      : glm::vec4(1.0f);
-            glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, glm::value_ptr(far));
+            glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
         }
         glClear(GL_DEPTH_BUFFER_BIT);
         const glm::mat4 lightViewProjection = map->projection.projection * map->projection.view;
@@ -333,7 +208,7 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
-    if (moments > 0) {
+    if (plan_.momentsFormat != 0) {
         filterMoments();
     }
 }
@@ -375,72 +250,40 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         return;
     }
     if (!samplers_) {
-        samplers_ = std::make_unique<Samplers>();
+        samplers_ = std::make_unique<ShadowSamplers>();
     }
-    const MapSampler sampler = techniqueTraits(settings_).sampler;
-    const GLuint mapSampler = sampler == MapSampler::DepthLinear     ? samplers_->depthLinear.id()
-                              : sampler == MapSampler::CompareLinear ? samplers_->compareLinear.id()
-                              : sampler == MapSampler::Moments       ? samplers_->moments.id()
-                                                                     : samplers_->compareNearest.id();
-    if (settings_.technique == ShadowTechnique::JitteredPcf) {
-        if (!jitter_ || jitter_->taps != settings_.jitterTaps) {
-            jitter_ = std::make_unique<Jitter>(settings_.jitterTaps);
+    if (plan_.needsJitterTexture) {
+        if (!jitter_ || jitter_->taps() != settings_.jitterTaps) {
+            jitter_ = std::make_unique<JitterTexture>(settings_.jitterTaps);
         }
-        glBindTextureUnit(jitterUnit_, jitter_->texture.id());
+        glBindTextureUnit(jitterUnit_, jitter_->id());
         glBindSampler(jitterUnit_, 0);
     }
     for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
-        glBindTextureUnit(mapUnits_[slot],
-                          maps_[slot]->moments ? maps_[slot]->moments->id() : maps_[slot]->depth.id());
-        glBindSampler(mapUnits_[slot], mapSampler);
+        glBindTextureUnit(mapUnits_[slot], maps_[slot]->sampledTexture());
+        glBindSampler(mapUnits_[slot], samplers_->forMap(plan_.sampler));
         if (maps_[slot]->gradient) {
             glBindTextureUnit(gradientUnits_[slot], maps_[slot]->gradient->id());
-            glBindSampler(gradientUnits_[slot], samplers_->depthLinear.id());
+            glBindSampler(gradientUnits_[slot], samplers_->linear());
         }
     }
+    glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());
     auto& uploaded = uploadedFrame_[program.id()];
     if (uploaded == frameIndex_ + 1) {
         return; // this program already holds this frame's uniforms
     }
     uploaded = frameIndex_ + 1;
 
+    // What the block cannot hold: sampler units, and the tap arrays (std140 would pad each float to 16
+    // bytes).
     const GLuint id = program.id();
-    glProgramUniform1iv(id, program.uniformLocation("gsShadowSlot"),
-                        static_cast<GLsizei>(slotOfLight_.size()), slotOfLight_.data());
-    std::vector<glm::mat4> matrices(kMaxMaps, glm::mat4(1.0f));
-    std::vector<glm::vec4> texels(kMaxMaps, glm::vec4(0.0f));
-    const float resolution = static_cast<float>(settings_.resolution);
-    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
-        const LightProjection& projection = maps_[slot]->projection;
-        matrices[slot] = projection.worldToShadow;
-        texels[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
-                                 projection.perspective ? 1.0f : 0.0f);
-    }
-    glProgramUniformMatrix4fv(id, program.uniformLocation("gsShadowMatrix"), kMaxMaps, GL_FALSE,
-                              glm::value_ptr(matrices[0]));
-    glProgramUniform4fv(id, program.uniformLocation("gsShadowTexel"), kMaxMaps, glm::value_ptr(texels[0]));
     const std::vector<GLint> mapUnits(mapUnits_.begin(), mapUnits_.end());
     const std::vector<GLint> gradientUnits(gradientUnits_.begin(), gradientUnits_.end());
     glProgramUniform1iv(id, program.uniformLocation("gsShadowMap"), kMaxMaps, mapUnits.data());
     if (const GLint location = program.uniformLocation("gsShadowGradientMap"); location >= 0) {
         glProgramUniform1iv(id, location, kMaxMaps, gradientUnits.data());
     }
-    program.set("gsShadowConstantBias", settings_.constantBias);
-    program.set("gsShadowDepthStep", depthStep(settings_.depthFormat));
-    program.set("gsShadowFuzzyScale", settings_.fuzzyScale);
-    program.set("gsShadowNormalOffset", settings_.normalOffsetTexels);
-    program.set("gsShadowReceiverPlaneClamp", settings_.receiverPlaneClamp ? 1 : 0);
-    program.set("gsShadowMinimumVariance", settings_.vsmMinimumVariance);
-    program.set("gsShadowBleedingReduction", settings_.lightBleedingReduction);
-    program.set("gsShadowMomentBias", settings_.msmMomentBias);
-    program.set("gsShadowMsmDequantize", glm::inverse(glsl::GS_MSM_QUANTIZE));
     program.set("gsShadowJitter", static_cast<int>(jitterUnit_));
-    program.set("gsJitterPairs", settings_.jitterTaps / 2);
-    program.set("gsEarlyOutPairs", settings_.earlyOutTestTaps / 2);
-    program.set("gsShadowJitterRadius", settings_.pcfRadius);
-    program.set("gsTapCount", static_cast<int>(pattern_.offsets.size()));
-    program.set("gsTapInverseCovariance", pattern_.inverseCovariance);
-    program.set("gsTapDisplace", settings_.pcfRadius / std::sqrt(2.0f));
     if (const GLint location = program.uniformLocation("gsTapOffsets"); location >= 0) {
         glProgramUniform2fv(id, location, static_cast<GLsizei>(pattern_.offsets.size()),
                             glm::value_ptr(pattern_.offsets[0]));
@@ -449,6 +292,45 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         glProgramUniform1fv(id, location, static_cast<GLsizei>(pattern_.quadraticFitRows.size()),
                             pattern_.quadraticFitRows.data());
     }
+}
+
+void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
+    ShadowBlock block{};
+    const float resolution = static_cast<float>(settings_.resolution);
+    for (int slot = 0; slot < kMaxMaps; ++slot) {
+        block.worldToShadow[slot] = glm::mat4(1.0f);
+    }
+    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
+        const LightProjection& projection = maps_[slot]->projection;
+        block.worldToShadow[slot] = projection.worldToShadow;
+        block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
+                                      projection.perspective ? 1.0f : 0.0f);
+    }
+    for (std::size_t light = 0; light < slotOfLight.size(); ++light) {
+        block.slotOfLight[light / 4][static_cast<glm::length_t>(light % 4)] = slotOfLight[light];
+    }
+    block.msmDequantize = glm::inverse(glsl::GS_MSM_QUANTIZE);
+    block.tapInverseCovariance[0] = glm::vec4(pattern_.inverseCovariance[0], 0.0f, 0.0f);
+    block.tapInverseCovariance[1] = glm::vec4(pattern_.inverseCovariance[1], 0.0f, 0.0f);
+    block.techniqueParameters = plan_.shaderParameters;
+    block.constantBias = settings_.constantBias;
+    block.depthStep = depthStep(settings_.depthFormat);
+    block.fuzzyScale = settings_.fuzzyScale;
+    block.normalOffset = settings_.normalOffsetTexels;
+    block.minimumVariance = settings_.vsmMinimumVariance;
+    block.bleedingReduction = settings_.lightBleedingReduction;
+    block.momentBias = settings_.msmMomentBias;
+    block.jitterRadius = settings_.pcfRadius;
+    block.receiverPlaneClamp = settings_.receiverPlaneClamp ? 1 : 0;
+    block.jitterPairs = settings_.jitterTaps / 2;
+    block.earlyOutPairs = settings_.earlyOutTestTaps / 2;
+    block.tapCount = static_cast<std::int32_t>(pattern_.offsets.size());
+    block.tapDisplace = settings_.pcfRadius / std::sqrt(2.0f);
+    if (!shadowBlock_) {
+        shadowBlock_ =
+            std::make_unique<engine::gl::Buffer>(sizeof(ShadowBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    shadowBlock_->update(0, sizeof block, &block);
 }
 
 } // namespace shadows

@@ -1,4 +1,5 @@
 #include <shadows/ShadowSettingsJson.h>
+#include <shadows/ShadowSettingsSchema.h>
 
 #include <engine/AtomicFile.h>
 
@@ -15,59 +16,6 @@ namespace shadows {
 namespace {
 
 using Json = nlohmann::json;
-
-template <typename Enum>
-struct EnumNames {
-    std::vector<std::pair<Enum, std::string_view>> names;
-
-    std::string_view nameOf(Enum value) const {
-        for (const auto& [entry, name] : names) {
-            if (entry == value) {
-                return name;
-            }
-        }
-        return "?";
-    }
-    std::string list() const {
-        std::string out;
-        for (const auto& [entry, name] : names) {
-            out += (out.empty() ? "" : ", ") + std::string(name);
-        }
-        return out;
-    }
-};
-
-const EnumNames<TapLayout> kLayouts{
-    {{TapLayout::Grid, "grid"}, {TapLayout::Poisson, "poisson"}, {TapLayout::Circular8, "circular8"}}};
-const EnumNames<CasterFaces> kFaces{{{CasterFaces::Front, "front"}, {CasterFaces::Back, "back"}}};
-const EnumNames<AverageGradientForm> kForms{{{AverageGradientForm::LeastSquares, "least-squares"},
-                                             {AverageGradientForm::Circular8, "circular8"},
-                                             {AverageGradientForm::Circular8Vec4, "circular8-vec4"}}};
-const EnumNames<ReceiverPlaneKernel> kKernels{
-    {{ReceiverPlaneKernel::Bilinear2x2, "bilinear2x2"}, {ReceiverPlaneKernel::PerTap, "per-tap"}}};
-
-EnumNames<ShadowTechnique> techniqueNames() {
-    EnumNames<ShadowTechnique> names;
-    for (const ShadowTechnique technique : allTechniques()) {
-        names.names.emplace_back(technique, toString(technique));
-    }
-    return names;
-}
-template <typename Enum, std::size_t N>
-EnumNames<Enum> namesFrom(const Enum (&values)[N]) {
-    EnumNames<Enum> names;
-    for (const Enum value : values) {
-        names.names.emplace_back(value, toString(value));
-    }
-    return names;
-}
-const DepthFormat kFormats[] = {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F};
-const GradientSource kSources[] = {GradientSource::StoredDerivatives, GradientSource::CentralDifferences,
-                                   GradientSource::ScreenSpace};
-const ShadowDebugView kViews[] = {
-    ShadowDebugView::None,      ShadowDebugView::TexelCheckerboard, ShadowDebugView::GradientMagnitude,
-    ShadowDebugView::Bias,      ShadowDebugView::Visibility,        ShadowDebugView::ShadowMap,
-    ShadowDebugView::FullKernel};
 
 /// The offending value for an error message: scalars as written (strings cut short), arrays and objects by
 /// kind only. Dumping a container recurses once per nesting level, so a deeply nested value in a settings
@@ -93,19 +41,20 @@ struct Field {
     std::function<void(ShadowSettings&, const Json&)> read;
 };
 
-template <typename Enum>
-Field enumField(Enum ShadowSettings::*member, EnumNames<Enum> names) {
-    return {[=](const ShadowSettings& s) { return Json(std::string(names.nameOf(s.*member))); },
+Field enumField(const EnumSetting& choice) {
+    return {[=](const ShadowSettings& s) {
+                return Json(std::string(choice.names[static_cast<std::size_t>(choice.get(s))]));
+            },
             [=](ShadowSettings& s, const Json& value) {
                 if (value.is_string()) {
-                    for (const auto& [entry, name] : names.names) {
-                        if (value.get<std::string>() == name) {
-                            s.*member = entry;
+                    for (std::size_t index = 0; index < choice.names.size(); ++index) {
+                        if (value.get<std::string>() == choice.names[index]) {
+                            choice.set(s, static_cast<int>(index));
                             return;
                         }
                     }
                 }
-                throw std::invalid_argument(describe(value) + " is not one of " + names.list());
+                throw std::invalid_argument(describe(value) + " is not one of " + choice.nameList());
             }};
 }
 
@@ -151,36 +100,27 @@ Field boolField(bool ShadowSettings::*member) {
             }};
 }
 
+Field fieldOf(const SettingRow& row) {
+    if (const auto* real = std::get_if<FloatSetting>(&row.field)) {
+        return floatField(real->member);
+    }
+    if (const auto* integer = std::get_if<IntSetting>(&row.field)) {
+        return intField(integer->member);
+    }
+    if (const auto* toggle = std::get_if<BoolSetting>(&row.field)) {
+        return boolField(toggle->member);
+    }
+    return enumField(std::get<EnumSetting>(row.field));
+}
+
 const std::map<std::string, Field>& fields() {
-    static const std::map<std::string, Field> table = {
-        {"technique", enumField(&ShadowSettings::technique, techniqueNames())},
-        {"resolution", intField(&ShadowSettings::resolution)},
-        {"depthFormat", enumField(&ShadowSettings::depthFormat, namesFrom(kFormats))},
-        {"casterFaces", enumField(&ShadowSettings::casterFaces, kFaces)},
-        {"constantBias", floatField(&ShadowSettings::constantBias)},
-        {"slopeScale", floatField(&ShadowSettings::slopeScale)},
-        {"slopeUnits", floatField(&ShadowSettings::slopeUnits)},
-        {"pcfLayout", enumField(&ShadowSettings::pcfLayout, kLayouts)},
-        {"pcfTaps", intField(&ShadowSettings::pcfTaps)},
-        {"pcfRadius", floatField(&ShadowSettings::pcfRadius)},
-        {"pcfRotate", boolField(&ShadowSettings::pcfRotate)},
-        {"gradientSource", enumField(&ShadowSettings::gradientSource, namesFrom(kSources))},
-        {"fuzzyScale", floatField(&ShadowSettings::fuzzyScale)},
-        {"averageGradientForm", enumField(&ShadowSettings::averageGradientForm, kForms)},
-        {"receiverPlaneKernel", enumField(&ShadowSettings::receiverPlaneKernel, kKernels)},
-        {"receiverPlaneClamp", boolField(&ShadowSettings::receiverPlaneClamp)},
-        {"normalOffsetTexels", floatField(&ShadowSettings::normalOffsetTexels)},
-        {"floorReceiverDepth", boolField(&ShadowSettings::floorReceiverDepth)},
-        {"texelSnapping", boolField(&ShadowSettings::texelSnapping)},
-        {"momentBlurRadius", intField(&ShadowSettings::momentBlurRadius)},
-        {"vsmMinimumVariance", floatField(&ShadowSettings::vsmMinimumVariance)},
-        {"lightBleedingReduction", floatField(&ShadowSettings::lightBleedingReduction)},
-        {"msmMomentBias", floatField(&ShadowSettings::msmMomentBias)},
-        {"msmQuantize16", boolField(&ShadowSettings::msmQuantize16)},
-        {"jitterTaps", intField(&ShadowSettings::jitterTaps)},
-        {"earlyOutTestTaps", intField(&ShadowSettings::earlyOutTestTaps)},
-        {"debugView", enumField(&ShadowSettings::debugView, namesFrom(kViews))},
-    };
+    static const std::map<std::string, Field> table = [] {
+        std::map<std::string, Field> byName;
+        for (const SettingRow& row : settingsSchema()) {
+            byName.emplace(row.name, fieldOf(row));
+        }
+        return byName;
+    }();
     return table;
 }
 

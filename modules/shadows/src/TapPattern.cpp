@@ -1,3 +1,4 @@
+#include <shadows/ShadowSettings.h>
 #include <shadows/TapPattern.h>
 
 #include <glm/gtc/constants.hpp>
@@ -198,15 +199,7 @@ TapPattern TapPattern::make(TapLayout layout, int taps, float radius) {
 }
 
 std::string toString(TapLayout layout) {
-    switch (layout) {
-    case TapLayout::Grid:
-        return "grid";
-    case TapLayout::Poisson:
-        return "poisson";
-    case TapLayout::Circular8:
-        return "circular8";
-    }
-    return "?";
+    return std::string(nameOf(layout));
 }
 
 } // namespace shadows

@@ -9,6 +9,7 @@
 #include <engine/HeadlessContext.h>
 #include <engine/Image.h>
 #include <shadows/ShadowSettingsJson.h>
+#include <shadows/ShadowSettingsSchema.h>
 #include <shadows/ShadowTechniqueTraits.h>
 
 #include <cstdlib>
@@ -96,21 +97,24 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--taps") {
             options.taps.clear();
             for (const std::string& item : splitList(value())) {
-                options.taps.push_back(cli::integerIn("--taps", item, 2, 8));
+                const shadows::IntLimits grid = shadows::integerLimits("pcfTaps"); // the default layout's
+                options.taps.push_back(cli::integerIn("--taps", item, grid.min, grid.max));
             }
         } else if (arg == "--radius") {
             options.radius = cli::numberIn("--radius", value(), 0.25f, 16.0f);
         } else if (arg == "--resolutions") {
             options.resolutions.clear();
             for (const std::string& item : splitList(value())) {
-                options.resolutions.push_back(cli::integerIn("--resolutions", item, 64, 16384));
+                const shadows::IntLimits sizes = shadows::integerLimits("resolution");
+                options.resolutions.push_back(cli::integerIn("--resolutions", item, sizes.min, sizes.max));
             }
         } else if (arg == "--formats") {
             options.formats.clear();
             for (const std::string& item : splitList(value())) {
                 const auto format = shadows::depthFormatFromString(item);
                 if (!format) {
-                    usageError("--formats: unknown depth format '" + item + "' (d16, d24, d32f)");
+                    usageError("--formats: unknown depth format '" + item + "' (" +
+                               shadows::nameList<shadows::DepthFormat>() + ")");
                 }
                 options.formats.push_back(*format);
             }

@@ -1,13 +1,12 @@
 #pragma once
 
 #include <shadows/LightFrustum.h>
+#include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettings.h>
 #include <shadows/TapPattern.h>
 
 #include <engine/Module.h>
-#include <engine/gl/Framebuffer.h>
-#include <engine/gl/GlObject.h>
-#include <engine/gl/Texture.h>
+#include <engine/gl/Buffer.h>
 #include <engine/gl/VertexArray.h>
 
 #include <map>
@@ -16,6 +15,10 @@
 #include <vector>
 
 namespace shadows {
+
+struct ShadowMapTarget;
+class ShadowSamplers;
+class JitterTexture;
 
 /// @brief Resource and frame counters of the shadow module.
 struct ShadowStats {
@@ -42,6 +45,8 @@ public:
     /// @brief Validates and applies `settings`. Throws std::invalid_argument listing each bad field.
     void setSettings(const ShadowSettings& settings);
     [[nodiscard]] const ShadowSettings& settings() const { return settings_; }
+    /// @brief What the passes do for the current settings (resolved by setSettings).
+    [[nodiscard]] const ShadowPlan& plan() const { return plan_; }
     [[nodiscard]] ShadowStats stats() const;
     /// @brief The projection of the shadow map of engine light `lightIndex` in the last frame, if it has one.
     [[nodiscard]] std::optional<LightProjection> lightProjection(int lightIndex) const;
@@ -55,27 +60,26 @@ public:
     void bindLightingResources(const engine::gl::Program& program, const engine::DrawContext& draw) override;
 
 private:
-    struct ShadowMap;
-    struct Samplers;
-    struct Jitter;
-
     void releaseResources();
-    [[nodiscard]] bool needsGradientTarget() const;
     void filterMoments();
-    [[nodiscard]] engine::ShaderVariantKey lightingKey() const;
+    /// Writes this frame's GsShadowBlock: the maps' projections, each light's map and the settings' scalars.
+    void uploadBlock(const std::vector<int>& slotOfLight);
+    [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;
 
     ShadowSettings settings_;
+    ShadowPlan plan_;
     TapPattern pattern_;
     engine::ModuleHost* host_ = nullptr;
-    std::unique_ptr<Samplers> samplers_;
+    std::unique_ptr<ShadowSamplers> samplers_;
     std::vector<GLuint> mapUnits_;
     std::vector<GLuint> gradientUnits_;
     GLuint jitterUnit_ = 0;
-    std::unique_ptr<Jitter> jitter_;
+    std::unique_ptr<JitterTexture> jitter_;
     std::unique_ptr<engine::gl::VertexArray> fullscreenVertexArray_;
-    std::vector<std::unique_ptr<ShadowMap>> maps_;
-    std::vector<int> slotOfLight_;
+    std::vector<std::unique_ptr<ShadowMapTarget>> maps_;
+    std::unique_ptr<engine::gl::Buffer> shadowBlock_;
     engine::ShaderVariantKey lightingKey_ = 0;
+    engine::ShaderVariantKey depthKey_ = 0;
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds
     std::uint64_t frameIndex_ = 0;
     bool dirty_ = true;

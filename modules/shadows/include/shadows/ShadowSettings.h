@@ -1,5 +1,7 @@
 #pragma once
 
+#include <shadows/EnumNames.h>
+#include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/TapPattern.h>
 
 #include <optional>
@@ -8,27 +10,6 @@
 #include <vector>
 
 namespace shadows {
-
-/// @brief The visibility functions the module can run; each selectable at run time.
-enum class ShadowTechnique {
-    HardCompare,           ///< 1. one hardware comparison (sampler2DShadow, NEAREST) + constant bias
-    SlopeScaledBias,       ///< 2. as 1, with slope-scaled polygon offset on the casters
-    HardwarePcf,           ///< 3. hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)
-    Pcf,                   ///< 4. N-tap PCF (grid or Poisson), optional per-pixel rotation
-    Gsm,                   ///< 5. single-tap gradient shadow map: linear depth, fuzzy comparison
-    PcfGsmNaive,           ///< 6. PCF over GSM, taps compared at the fragment's depth (reproduces Fig. 4.2.3)
-    PcfGsmPointGradient,   ///< 7. PCF over GSM, taps follow the fragment's gradient
-    PcfGsmAverageGradient, ///< 8. PCF over GSM, taps follow the least-squares gradient of the taps
-    PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
-    ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
-    NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
-    Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
-    Msm,         ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
-    JitteredPcf, ///< PCF over a stratified jitter texture, optional early-out on a few test taps
-};
-
-/// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::JitteredPcf) + 1;
 
 /// @brief Where the single-fragment depth gradient comes from (GSM reference, "Overview").
 enum class GradientSource {
@@ -68,65 +49,39 @@ enum class ShadowDebugView {
 };
 
 /// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it
-/// (changing anything re-initialises the affected resources lazily on the next frame).
+/// (changing anything re-initialises the affected resources lazily on the next frame). The defaults are
+/// here; what each field means, its unit, range and when it applies are in the one schema
+/// (shadows::settingsSchema(), generated into the settings table of docs/SHADOWS.md).
 struct ShadowSettings {
-    /// Visibility function. Default PcfGsmAverageGradient.
     ShadowTechnique technique = ShadowTechnique::PcfGsmAverageGradient;
-    /// Shadow map width and height in texels, 64..16384. Default 2048.
     int resolution = 2048;
-    /// Depth format of the shadow map. Default D24.
     DepthFormat depthFormat = DepthFormat::D24;
-    /// Faces rendered into the map. Default Front.
     CasterFaces casterFaces = CasterFaces::Front;
-    /// Receiver moved towards the light before the comparison, world units, >= 0. Default 0.002.
     float constantBias = 0.002f;
-    /// SlopeScaledBias: glPolygonOffset factor (scales the caster's depth slope), >= 0. Default 1.5.
     float slopeScale = 1.5f;
-    /// SlopeScaledBias: glPolygonOffset units (multiples of the format's resolvable step), >= 0. Default 2.
     float slopeUnits = 2.0f;
-    /// PCF layout for Pcf, PcfGsm* and ReceiverPlaneBias/PerTap. Default Grid.
     TapLayout pcfLayout = TapLayout::Grid;
-    /// Grid: taps per side (2..8); Poisson: tap count (8..64); ignored for Circular8. Default 4.
     int pcfTaps = 4;
-    /// Radius of the PCF pattern in texels, > 0. Default 1.5.
     float pcfRadius = 1.5f;
-    /// Rotate the pattern per pixel (interleaved gradient noise) to trade banding for noise. Default false.
     bool pcfRotate = false;
-    /// Gradient for Gsm, the point-gradient correction and the naive fuzzy width. Default CentralDifferences.
     GradientSource gradientSource = GradientSource::CentralDifferences;
-    /// GSM fuzzy band width in texels of depth change, > 0. Default 1.
     float fuzzyScale = 1.0f;
-    /// Average-gradient form. Default LeastSquares.
     AverageGradientForm averageGradientForm = AverageGradientForm::LeastSquares;
-    /// ReceiverPlaneBias kernel. Default Bilinear2x2.
     ReceiverPlaneKernel receiverPlaneKernel = ReceiverPlaneKernel::Bilinear2x2;
-    /// ReceiverPlaneBias: only let the bias move receivers towards the light (min(0, bias)). Default true.
     bool receiverPlaneClamp = true;
-    /// NormalOffset: offset along the normal in texel sizes at the receiver, >= 0. Default 1.5.
     float normalOffsetTexels = 1.5f;
-    /// Floor the receiver depth to the format's step before hardware comparisons (bias reference). Default
-    /// false.
     bool floorReceiverDepth = false;
-    /// Snap the directional light's frustum to whole texels so shadows do not shimmer. Default true.
     bool texelSnapping = true;
-    /// Vsm, Msm: half-width of the separable box blur of the moments, texels, 0..16. Default 2.
     int momentBlurRadius = 2;
-    /// Vsm: smallest variance the Chebyshev bound uses (depth units squared), >= 0. Default 1e-6.
     float vsmMinimumVariance = 1e-6f;
-    /// Vsm: light-bleeding reduction, the bound's tail cut off (linstep), 0..0.95. Default 0.2.
     float lightBleedingReduction = 0.2f;
-    /// Msm: moment bias towards (0, 0.63, 0, 0.63) (advanced shadow mapping reference), 0..0.5. Default 3e-5;
-    /// the reference's blog uses 9e-3, which hides more numerical trouble at the cost of light leaking.
+    // The reference's blog uses 9e-3, which hides more numerical trouble at the cost of light leaking.
     float msmMomentBias = 3e-5f;
-    /// Msm: store the moments in 16-bit unorm through the optimised basis (64 bits per texel) instead of 4 x
-    /// 32-bit float. Default false.
     bool msmQuantize16 = false;
-    /// JitteredPcf: taps, even, 8..64 (two per jitter texel). Default 32.
+    float evsmPositiveExponent = 40.0f;
+    float evsmNegativeExponent = 5.0f;
     int jitterTaps = 32;
-    /// JitteredPcf: test taps taken before deciding whether the pixel needs the full kernel, even, 0 (always
-    /// the full kernel) or 4..16. Default 8.
     int earlyOutTestTaps = 8;
-    /// Debug output of the lighting pass. Default None.
     ShadowDebugView debugView = ShadowDebugView::None;
 
     /// @brief Empty when the settings are usable, otherwise one line per problem naming the field.
@@ -137,8 +92,25 @@ struct ShadowSettings {
     bool operator==(const ShadowSettings&) const = default;
 };
 
-/// @brief Stable names ("hard", "slope-scaled", "hw-pcf", "pcf", "gsm", "pcf-gsm-naive", "pcf-gsm-point",
-/// "pcf-gsm-average", "pcf-gsm-quadratic", "receiver-plane", "normal-offset") for CLIs and files.
+// The one name table of each settings enum (ShadowEnumNames.cpp; techniques from the technique table).
+template <>
+std::span<const EnumName<ShadowTechnique>> enumNames();
+template <>
+std::span<const EnumName<TapLayout>> enumNames();
+template <>
+std::span<const EnumName<GradientSource>> enumNames();
+template <>
+std::span<const EnumName<DepthFormat>> enumNames();
+template <>
+std::span<const EnumName<CasterFaces>> enumNames();
+template <>
+std::span<const EnumName<AverageGradientForm>> enumNames();
+template <>
+std::span<const EnumName<ReceiverPlaneKernel>> enumNames();
+template <>
+std::span<const EnumName<ShadowDebugView>> enumNames();
+
+/// @brief Stable technique names for CLIs and files (from shadows::techniqueTable()).
 std::string_view toString(ShadowTechnique technique);
 std::optional<ShadowTechnique> techniqueFromString(std::string_view name);
 /// @brief Every technique in declaration order.

@@ -1,12 +1,37 @@
 #pragma once
 
-#include <shadows/ShadowSettings.h>
+#include <epoxy/gl.h>
+#include <glm/vec4.hpp>
 
+#include <array>
+#include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
-#include <vector>
 
 namespace shadows {
+
+/// @brief The visibility functions the module can run; each selectable at run time.
+enum class ShadowTechnique {
+    HardCompare,           ///< 1. one hardware comparison (sampler2DShadow, NEAREST) + constant bias
+    SlopeScaledBias,       ///< 2. as 1, with slope-scaled polygon offset on the casters
+    HardwarePcf,           ///< 3. hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)
+    Pcf,                   ///< 4. N-tap PCF (grid or Poisson), optional per-pixel rotation
+    Gsm,                   ///< 5. single-tap gradient shadow map: linear depth, fuzzy comparison
+    PcfGsmNaive,           ///< 6. PCF over GSM, taps compared at the fragment's depth (reproduces Fig. 4.2.3)
+    PcfGsmPointGradient,   ///< 7. PCF over GSM, taps follow the fragment's gradient
+    PcfGsmAverageGradient, ///< 8. PCF over GSM, taps follow the least-squares gradient of the taps
+    PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
+    ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
+    NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
+    Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
+    Msm,         ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
+    Evsm,        ///< exponential variance shadow map: two warped depths and their squares, Chebyshev on each
+    JitteredPcf, ///< PCF over a stratified jitter texture, optional early-out on a few test taps
+};
+
+/// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::JitteredPcf) + 1;
 
 /// @brief How the lighting pass samples a technique's shadow map.
 enum class MapSampler {
@@ -16,32 +41,61 @@ enum class MapSampler {
     Moments,        ///< trilinear sampler2D over the blurred, mipmapped moments target (VSM, MSM)
 };
 
-/// @brief The strategy table behind ShadowModule: what each technique needs, one row per technique.
+struct ShadowSettings;
+
+/// @brief The filtered moments a technique's shadow pass stores per texel besides the depth buffer: blurred,
+/// mipmapped, and read through MapSampler::Moments.
+struct MomentStore {
+    /// Depth-pass define under which the technique's file defines gsShadowStore(depth).
+    std::string_view define;
+    /// Colour format of the moments target for these settings (e.g. GL_RGBA16 when MSM quantises).
+    GLenum (*format)(const ShadowSettings&);
+    /// What empty texels hold: the far plane (depth 1) as stored.
+    glm::vec4 (*farPlane)(const ShadowSettings&);
+};
+
+/// @brief What a technique needs, whatever its options: one row per technique (techniqueTable()).
+/// ShadowPlan resolves a row and the settings into what the passes do.
 struct ShadowTechniqueTraits {
     ShadowTechnique technique;
     /// Stable name for CLIs and files.
     std::string_view name;
-    MapSampler sampler;
-    /// Lighting-pass defines (besides GS_SHADOWS) that select the technique in shaders/shadows/receiver.glsl.
-    std::vector<std::string_view> defines;
+    /// What it does, for the techniques tables of docs/SHADOWS.md and the README (Markdown).
+    std::string_view summary;
+    /// Where it comes from, for the same tables; empty where nothing is cited.
+    std::string_view reference = {};
+    MapSampler sampler = MapSampler::CompareNearest;
+    /// Lighting-pass defines (besides GS_SHADOWS) that select the technique's function
+    /// gsShadowSample_<Technique> in shaders/shadows/techniques/: its family's, and the technique's own where
+    /// a family shares code.
+    std::array<std::string_view, 2> defines = {};
+    /// The filtered moments the shadow pass stores; none (a null format) for depth-only maps.
+    MomentStore moments = {};
+    /// The technique's own parameters for its shader function (gsShadowTechniqueParameters), from the
+    /// settings; null when it has none beyond the shared block.
+    glm::vec4 (*shaderParameters)(const ShadowSettings&) = nullptr;
     /// Reads a per-fragment depth gradient (ShadowSettings::gradientSource applies).
-    bool readsPointGradient;
+    bool readsPointGradient = false;
     /// Uses the PCF tap pattern (pcfLayout, pcfTaps, pcfRadius, pcfRotate apply).
-    bool usesTapPattern;
+    bool usesTapPattern = false;
     /// Renders casters with slope-scaled polygon offset.
-    bool offsetsCasters;
-    /// Moments stored per texel by the shadow pass (0: depth only; 2: VSM; 4: MSM).
-    int moments = 0;
+    bool offsetsCasters = false;
+    /// Compares at receiver depths from a gradient with a fuzzy band (fuzzyScale applies).
+    bool fuzzyComparison = false;
+    /// Takes its taps from the stratified jitter texture.
+    bool jittered = false;
+    /// Bounds visibility by Chebyshev's inequality on filtered moments (vsmMinimumVariance and
+    /// lightBleedingReduction apply).
+    bool chebyshevBound = false;
 };
 
 /// @brief Every technique's row, in ShadowTechnique order.
 std::span<const ShadowTechniqueTraits> techniqueTable();
 
-/// @brief The row for `settings.technique`, adjusted by the options that change what it needs (the
-/// receiver-plane per-tap kernel; the average gradient's circular-8 forms).
-ShadowTechniqueTraits techniqueTraits(const ShadowSettings& settings);
+/// @brief The row of `technique`.
+const ShadowTechniqueTraits& traitsOf(ShadowTechnique technique);
 
-/// @brief Every lighting-pass define `settings` select: technique, gradient source, options and debug view.
-std::vector<std::string_view> lightingDefines(const ShadowSettings& settings);
+/// @brief The techniques table of docs/SHADOWS.md and the README (Markdown), one row per technique.
+std::string techniqueMarkdownTable();
 
 } // namespace shadows

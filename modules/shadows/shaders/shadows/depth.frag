@@ -2,29 +2,25 @@
 // Shadow pass. Beside the depth it may store, per texel:
 // - GS_SHADOW_STORE_GRADIENT: the depth gradient per texel (GSM reference: "generated from derivative
 //   instructions in the first pass and stored with the depth map");
-// - GS_SHADOW_STORE_MOMENTS2 / 4: depth moments for VSM (z, z²) or MSM (z .. z⁴), optionally in the optimised
-//   16-bit basis (GS_SHADOW_MSM_QUANTIZED).
+// - filtered moments: the technique's file defines gsShadowStore(depth) and its type GS_SHADOW_STORED_MOMENTS
+//   under the define of its MomentStore (ShadowTechniqueTraits).
 #define GS_OUT(T) out T
+#include "frame.glsl"
+#include "block.glsl"
 #include "visibility.glsl"
+#include "techniques.glsl"
 
-#if defined(GS_SHADOW_STORE_GRADIENT) || defined(GS_SHADOW_STORE_MOMENTS2)
+#if defined(GS_SHADOW_STORE_GRADIENT)
 layout(location = 0) out vec2 outValue;
-#elif defined(GS_SHADOW_STORE_MOMENTS4)
-layout(location = 0) out vec4 outValue;
+#elif defined(GS_SHADOW_STORED_MOMENTS)
+layout(location = 0) out GS_SHADOW_STORED_MOMENTS outValue;
 #endif
 
 void main() {
 #if defined(GS_SHADOW_STORE_GRADIENT)
     // One fragment is one texel, so these are dz per texel step.
     outValue = vec2(dFdxFine(gl_FragCoord.z), dFdyFine(gl_FragCoord.z));
-#elif defined(GS_SHADOW_STORE_MOMENTS2)
-    float z = gl_FragCoord.z;
-    outValue = vec2(z, z * z);
-#elif defined(GS_SHADOW_STORE_MOMENTS4)
-    vec4 moments = gsMsmMoments(gl_FragCoord.z);
-#ifdef GS_SHADOW_MSM_QUANTIZED
-    moments = gsMsmQuantize(moments);
-#endif
-    outValue = moments;
+#elif defined(GS_SHADOW_STORED_MOMENTS)
+    outValue = gsShadowStore(gl_FragCoord.z);
 #endif
 }

@@ -1,18 +1,12 @@
 // Shadow visibility in the lighting pass (forward.frag "declarations" slot). One variant per technique and
 // option: the GS_SHADOW_* defines come from the shadow module's variant bits, so only what a scene uses compiles.
+// The common part projects the receiver into the light's map (GsShadowLookup); the technique's function
+// gsShadowSample_<Technique> (shaders/shadows/techniques/, each guarded by its own define, which also defines
+// gsShadowSample to it) turns that into visibility and the debug views' values.
 #define GS_OUT(T) out T
 #include "visibility.glsl"
 
-const int GS_SHADOW_MAX_MAPS = 4;
-
-uniform int gsShadowSlot[GS_MAX_LIGHTS];              // shadow map of each engine light, -1 for none
-uniform mat4 gsShadowMatrix[GS_SHADOW_MAX_MAPS];      // world -> shadow texture space (divide by w)
-uniform vec4 gsShadowTexel[GS_SHADOW_MAX_MAPS];       // x resolution, y 1/resolution, z texel scale, w perspective
-uniform float gsShadowConstantBias;                   // world units towards the light
-uniform float gsShadowDepthStep;                      // depth format step (0 for float)
-uniform float gsShadowFuzzyScale;                     // GSM band width in texels
-uniform float gsShadowNormalOffset;                   // normal offset in texel sizes
-uniform bool gsShadowReceiverPlaneClamp;
+#include "block.glsl"
 
 #ifdef GS_SHADOW_SAMPLER_COMPARE
 uniform sampler2DShadow gsShadowMap[GS_SHADOW_MAX_MAPS];
@@ -22,23 +16,31 @@ uniform sampler2D gsShadowMap[GS_SHADOW_MAX_MAPS];
 #ifdef GS_SHADOW_GRADIENT_STORED
 uniform sampler2D gsShadowGradientMap[GS_SHADOW_MAX_MAPS];
 #endif
-
-uniform float gsShadowMinimumVariance;               // VSM
-uniform float gsShadowBleedingReduction;             // VSM
-uniform float gsShadowMomentBias;                    // MSM
-uniform mat4 gsShadowMsmDequantize;                  // MSM 16-bit: inverse of the optimised basis
-#ifdef GS_SHADOW_JITTERED
-uniform sampler3D gsShadowJitter;                    // two stratified offsets per texel (soft shadows reference)
-uniform int gsJitterPairs;
-uniform int gsEarlyOutPairs;                         // 0: always the full kernel
-uniform float gsShadowJitterRadius;                  // texels
-#endif
-
-uniform int gsTapCount;
 uniform vec2 gsTapOffsets[GS_MAX_TAPS];
-uniform mat2 gsTapInverseCovariance;
 uniform float gsTapFitRows[6 * GS_MAX_TAPS];
-uniform float gsTapDisplace; // circular-8 d, texels
+
+// Where a receiver lands in its light's map.
+struct GsShadowLookup {
+    int slot;
+    vec2 coord;          // shadow texture coordinates
+    vec2 texel;          // the same in texels
+    float depth;         // receiver depth in the map's [0,1] range
+    vec2 pointGradient;  // the fragment's depth gradient per texel (GS_SHADOW_GRADIENT_*), else zero
+    vec2 screenGradient; // receiver plane from screen derivatives, where a technique needs it
+};
+
+// What a technique returns: visibility, and what the debug views show.
+struct GsShadowSample {
+    float visibility;
+    float stored;     // stored depth (or first moment) under the fragment
+    float bias;       // receiver-plane bias
+    vec2 gradient;    // the gradient the technique used
+    bool fullKernel;  // jittered PCF took every tap
+};
+
+GsShadowSample gsShadowResult(float visibility, float stored, GsShadowLookup lookup) {
+    return GsShadowSample(visibility, stored, 0.0, lookup.pointGradient, false);
+}
 
 // What the debug views show: the values of the first shadowed light of this fragment.
 float gsDebugVisibility = 1.0;
@@ -76,8 +78,14 @@ float gsShadowDepthAt(int slot, vec2 texel) {
 }
 #endif
 
+// Every technique file (the module lists them when it registers its shaders), each compiled only under its
+// own define.
+#include "techniques.glsl"
+
 float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
-    int slot = gsShadowSlot[lightIndex];
+    GsShadowLookup lookup;
+    lookup.slot = gsShadowSlots[lightIndex / 4][lightIndex % 4];
+    int slot = lookup.slot;
     if (slot < 0) {
         return 1.0;
     }
@@ -92,158 +100,42 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     // Behind a spot light (w <= 0) nothing is mapped; the cone attenuation is zero there anyway.
     float w = clip.w > 1e-20 ? clip.w : 1e-20;
     vec3 coord = clip.xyz / w;
-    vec2 texel = coord.xy * gsShadowTexel[slot].x;
-    float depth = coord.z;
+    lookup.coord = coord.xy;
+    lookup.texel = coord.xy * gsShadowTexel[slot].x;
+    lookup.depth = coord.z;
     // Screen derivatives must be taken before any per-pixel branch.
+    lookup.screenGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
-    vec2 screenGradient = gsReceiverPlaneGradient(dFdxFine(texel), dFdyFine(texel), dFdxFine(depth), dFdyFine(depth));
+    lookup.screenGradient = gsReceiverPlaneGradient(dFdxFine(lookup.texel), dFdyFine(lookup.texel),
+                                                    dFdxFine(lookup.depth), dFdyFine(lookup.depth));
 #endif
-    if (clip.w <= 0.0 || depth >= 1.0) {
+    if (clip.w <= 0.0 || lookup.depth >= 1.0) {
         return 1.0; // outside the light's depth range: nothing can occlude
     }
 
-    vec2 pointGradient = vec2(0.0);
+    lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
-    pointGradient = texture(gsShadowGradientMap[slot], coord.xy).rg;
+    lookup.pointGradient = texture(gsShadowGradientMap[slot], lookup.coord).rg;
 #elif defined(GS_SHADOW_GRADIENT_CENTRAL)
-    pointGradient = 0.5 * vec2(gsShadowDepthAt(slot, texel + vec2(1, 0)) - gsShadowDepthAt(slot, texel - vec2(1, 0)),
-                               gsShadowDepthAt(slot, texel + vec2(0, 1)) - gsShadowDepthAt(slot, texel - vec2(0, 1)));
+    vec2 texel = lookup.texel;
+    lookup.pointGradient =
+        0.5 * vec2(gsShadowDepthAt(slot, texel + vec2(1, 0)) - gsShadowDepthAt(slot, texel - vec2(1, 0)),
+                   gsShadowDepthAt(slot, texel + vec2(0, 1)) - gsShadowDepthAt(slot, texel - vec2(0, 1)));
 #elif defined(GS_SHADOW_GRADIENT_SCREEN)
-    pointGradient = screenGradient;
+    lookup.pointGradient = lookup.screenGradient;
 #endif
 
-    float visibility = 1.0;
-    float bias = 0.0;
-    float stored = 1.0;
-
-#if defined(GS_SHADOW_SINGLE_COMPARE)
-    // Techniques 1, 2, 3, 11: one hardware comparison (the sampler decides NEAREST or 2x2 LINEAR PCF).
-    visibility = texture(gsShadowMap[slot], vec3(coord.xy, gsShadowReference(depth)));
-    stored = visibility;
-#elif defined(GS_SHADOW_PCF)
-    mat2 rotation = gsShadowRotation();
-    float sum = 0.0;
-    for (int i = 0; i < gsTapCount; ++i) {
-        vec2 tap = (texel + rotation * gsTapOffsets[i]) * gsShadowTexel[slot].y;
-        sum += texture(gsShadowMap[slot], vec3(tap, gsShadowReference(depth)));
-    }
-    visibility = sum / float(max(gsTapCount, 1));
-#elif defined(GS_SHADOW_GSM)
-    stored = gsShadowDepthAt(slot, texel);
-    visibility = gsFuzzyVisibility(stored, depth, length(pointGradient), gsShadowFuzzyScale, gsShadowDepthStep);
-#elif defined(GS_SHADOW_PCF_GSM)
-    mat2 rotation = gsShadowRotation();
-    float depths[GS_MAX_TAPS];
-    for (int i = 0; i < gsTapCount; ++i) {
-        depths[i] = gsShadowDepthAt(slot, texel + rotation * gsTapOffsets[i]);
-    }
-    stored = depths[0];
-    // The fits run in the pattern's frame: bring the point gradient into it (rotation is orthonormal).
-    vec2 patternGradient = transpose(rotation) * pointGradient;
-    int correction = GS_CORRECTION_NONE;
-#if defined(GS_SHADOW_CORRECTION_POINT)
-    correction = GS_CORRECTION_POINT;
-#elif defined(GS_SHADOW_CORRECTION_AVERAGE) && (defined(GS_SHADOW_AVG_CIRCULAR8) || defined(GS_SHADOW_AVG_VEC4))
-    // The reference's unrolled forms: the closed-form average gradient then drives the point correction.
-    float eight[8];
-    for (int i = 0; i < 8; ++i) {
-        eight[i] = depths[i];
-    }
-#if defined(GS_SHADOW_AVG_VEC4)
-    patternGradient = gsCircular8GradientVec4(vec4(eight[0], eight[1], eight[2], eight[3]),
-                                              vec4(eight[4], eight[5], eight[6], eight[7]), gsTapDisplace);
-#else
-    patternGradient = gsCircular8Gradient(eight, gsTapDisplace);
-#endif
-    correction = GS_CORRECTION_POINT;
-#elif defined(GS_SHADOW_CORRECTION_AVERAGE)
-    correction = GS_CORRECTION_AVERAGE;
-#elif defined(GS_SHADOW_CORRECTION_QUADRATIC)
-    correction = GS_CORRECTION_QUADRATIC;
-#endif
-    visibility = gsPcfGsmVisibility(depths, gsTapOffsets, gsTapCount, depth, patternGradient, correction,
-                                    gsTapInverseCovariance, gsTapFitRows, gsShadowFuzzyScale, gsShadowDepthStep);
-#elif defined(GS_SHADOW_VSM)
-    vec2 moments = texture(gsShadowMap[slot], coord.xy).rg;
-    visibility = gsChebyshevVisibility(moments, depth, gsShadowMinimumVariance, gsShadowBleedingReduction);
-    stored = moments.x;
-#elif defined(GS_SHADOW_MSM)
-    vec4 moments = texture(gsShadowMap[slot], coord.xy);
-#ifdef GS_SHADOW_MSM_QUANTIZED
-    moments = gsMsmDequantize(moments, gsShadowMsmDequantize);
-#endif
-    visibility = gsMsmVisibility(moments, depth, gsShadowMomentBias);
-    stored = moments.x;
-#elif defined(GS_SHADOW_JITTERED)
-    // Soft shadows reference: pairs of stratified offsets from the jitter texture, tiled over the screen. With
-    // early-out, the first pairs are test taps; when they agree the pixel is not in a penumbra and the rest are
-    // skipped. The result averages every tap actually taken (the reference's pseudo-code divides by the full
-    // count either way, which darkens skipped pixels).
-    ivec2 tile = ivec2(mod(gl_FragCoord.xy, 32.0));
-    float reference = gsShadowReference(depth);
-    float lit = 0.0;
-    int taken = 0;
-    for (int pair = 0; pair < gsJitterPairs; ++pair) {
-#ifdef GS_SHADOW_EARLY_OUT
-        if (pair == gsEarlyOutPairs && gsTestTapsAgree(lit, float(taken))) {
-            break;
-        }
-#endif
-        vec4 offsets = (texelFetch(gsShadowJitter, ivec3(tile, pair), 0) * 2.0 - 1.0) * gsShadowJitterRadius;
-        lit += texture(gsShadowMap[slot], vec3((texel + offsets.xy) * gsShadowTexel[slot].y, reference));
-        lit += texture(gsShadowMap[slot], vec3((texel + offsets.zw) * gsShadowTexel[slot].y, reference));
-        taken += 2;
-    }
-    visibility = lit / float(max(taken, 1));
-    gsDebugFullKernel = taken == 2 * gsJitterPairs;
-#elif defined(GS_SHADOW_RECEIVER_PLANE)
-    pointGradient = screenGradient;
-#if defined(GS_SHADOW_RPB_PER_TAP)
-    mat2 rotation = gsShadowRotation();
-    float sum = 0.0;
-    for (int i = 0; i < gsTapCount; ++i) {
-        vec2 centre = floor(texel + rotation * gsTapOffsets[i]) + 0.5;
-        float tapDepth = gsReceiverPlaneTapDepth(depth, centre - texel, screenGradient, gsShadowReceiverPlaneClamp);
-        sum += texture(gsShadowMap[slot], vec3(centre * gsShadowTexel[slot].y, gsShadowReference(tapDepth)));
-    }
-    visibility = sum / float(max(gsTapCount, 1));
-#else
-    // textureGather returns the 2x2 footprint's depths. The reference nudges the coordinate by 1/512 texel so
-    // frac() and the gather agree on the footprint; we gather at the footprint's centre instead, which is half a
-    // texel from any selection boundary, so the two agree on every implementation's sub-texel precision.
-    vec2 footprint = floor(texel - 0.5);
-    vec2 weights = texel - 0.5 - footprint;
-    vec2 gatherAt = (footprint + 1.0) * gsShadowTexel[slot].y;
-    vec4 gathered = textureGather(gsShadowMap[slot], gatherAt);
-    // Gather order x (-,+), y (+,+), z (+,-), w (-,-): distances from the pixel to each texel centre.
-    vec2 toCentre0 = vec2(-weights.x, 1.0 - weights.y);
-    vec2 toCentre1 = vec2(1.0 - weights.x, 1.0 - weights.y);
-    vec2 toCentre2 = vec2(1.0 - weights.x, -weights.y);
-    vec2 toCentre3 = vec2(-weights.x, -weights.y);
-    bool clampBias = gsShadowReceiverPlaneClamp;
-    vec4 references = vec4(gsReceiverPlaneTapDepth(depth, toCentre0, screenGradient, clampBias),
-                           gsReceiverPlaneTapDepth(depth, toCentre1, screenGradient, clampBias),
-                           gsReceiverPlaneTapDepth(depth, toCentre2, screenGradient, clampBias),
-                           gsReceiverPlaneTapDepth(depth, toCentre3, screenGradient, clampBias));
-    vec4 lit = vec4(gsCompare(gathered.x, gsShadowReference(references.x)),
-                    gsCompare(gathered.y, gsShadowReference(references.y)),
-                    gsCompare(gathered.z, gsShadowReference(references.z)),
-                    gsCompare(gathered.w, gsShadowReference(references.w)));
-    visibility = gsBilinear(lit, weights);
-    bias = references.w - depth;
-    stored = gathered.w;
-#endif
-#endif
-
+    GsShadowSample result = gsShadowSample(lookup);
+    gsDebugFullKernel = result.fullKernel;
     if (!gsDebugSet) {
         gsDebugSet = true;
-        gsDebugVisibility = visibility;
-        gsDebugGradient = length(pointGradient);
-        gsDebugBias = bias;
-        gsDebugStored = stored;
-        gsDebugTexel = texel;
+        gsDebugVisibility = result.visibility;
+        gsDebugGradient = length(result.gradient);
+        gsDebugBias = result.bias;
+        gsDebugStored = result.stored;
+        gsDebugTexel = lookup.texel;
     }
-    return gsSaturate(visibility);
+    return gsSaturate(result.visibility);
 }
 
 // Debug views replace the shaded colour (final_color slot).

@@ -141,15 +141,6 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
     return gsSaturate(sum / float(max(count, 1)));
 }
 
-// Plain PCF: the fraction of taps whose hard comparison passes (Reeves et al. 1987).
-float gsPcfVisibility(const float depths[GS_MAX_TAPS], int count, float receiverDepth) {
-    float sum = 0.0f;
-    for (int i = 0; i < count; ++i) {
-        sum += gsCompare(depths[i], receiverDepth);
-    }
-    return sum / float(max(count, 1));
-}
-
 // Receiver-plane bias for one texel of a 2x2 bilinear footprint (bias reference, "Applications"):
 // the surface depth extrapolated from the fragment to the texel's centre, `toTexelCentre` texels away;
 // with `clampToLit`, the bias may only move the receiver towards the light (min(0, bias)).
@@ -179,6 +170,33 @@ float gsChebyshevVisibility(vec2 moments, float depth, float minimumVariance, fl
     float distance = depth - moments.x;
     float bound = variance / (variance + distance * distance);
     return gsSaturate((bound - bleedingReduction) / max(1.0f - bleedingReduction, 1e-6f));
+}
+
+// Exponential variance shadow maps (Lauritzen & McCool, "Layered variance shadow maps", GI 2008, section on
+// exponential warping; as Filament and Unity HDRP ship them): depth d warped to exp(c+ d) and -exp(-c- d). Both
+// warps increase with d, so Chebyshev's bound holds for each, and a receiver's bound is the smaller of the two;
+// the steep warps shrink the variance an occluder's neighbourhood adds, which is what VSM's light bleeding is.
+// Exponents up to 42 keep exp(2c) finite in float32.
+vec2 gsEvsmWarp(float depth, vec2 exponents) {
+    return vec2(exp(exponents.x * depth), -exp(-exponents.y * depth));
+}
+
+// What the shadow pass stores: both warps and their squares.
+vec4 gsEvsmMoments(float depth, vec2 exponents) {
+    vec2 warped = gsEvsmWarp(depth, exponents);
+    return vec4(warped.x, warped.x * warped.x, warped.y, warped.y * warped.y);
+}
+
+// `minimumVariance` is in depth units squared; in a warp's space it scales by the warp's slope squared
+// (d/dd of exp(c d) is c exp(c d)), which also keeps it above float32's cancellation in m2 - m1^2.
+float gsEvsmVisibility(vec4 moments, float depth, vec2 exponents, float minimumVariance, float bleedingReduction) {
+    vec2 warped = gsEvsmWarp(depth, exponents);
+    vec2 slope = exponents * warped;
+    float positive = gsChebyshevVisibility(vec2(moments.x, moments.y), warped.x, minimumVariance * slope.x * slope.x,
+                                           bleedingReduction);
+    float negative = gsChebyshevVisibility(vec2(moments.z, moments.w), warped.y, minimumVariance * slope.y * slope.y,
+                                           bleedingReduction);
+    return min(positive, negative);
 }
 
 // Moment shadow mapping, four moments, Hamburger bound (Peters & Klein 2015, Algorithm 2, as in the reference):

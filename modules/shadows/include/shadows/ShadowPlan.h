@@ -1,0 +1,50 @@
+#pragma once
+
+#include <shadows/ShadowSettings.h>
+#include <shadows/ShadowTechniqueTraits.h>
+
+#include <epoxy/gl.h>
+#include <glm/vec4.hpp>
+
+#include <string_view>
+#include <vector>
+
+namespace shadows {
+
+/// @brief What the passes do for one set of settings: the technique's row resolved against its options,
+/// once, in ShadowModule::setSettings; everything else reads it.
+struct ShadowPlan {
+    /// @brief Resolves valid `settings` (ShadowSettings::validate is empty).
+    static ShadowPlan resolve(const ShadowSettings& settings);
+
+    const ShadowTechniqueTraits* traits = nullptr;
+    /// How the lighting pass samples the map (the receiver-plane per-tap kernel compares in hardware).
+    MapSampler sampler = MapSampler::CompareNearest;
+    /// Whether the tap pattern is used (the receiver-plane per-tap kernel uses it too).
+    bool usesTapPattern = false;
+    /// Lighting-pass defines: GS_SHADOWS, the technique's, its options' and the debug view's.
+    std::vector<std::string_view> lightingDefines;
+    /// Depth-pass defines: what the pass stores besides depth.
+    std::vector<std::string_view> depthDefines;
+
+    /// Depth buffer format of the map.
+    GLenum depthFormat = GL_DEPTH_COMPONENT24;
+    std::size_t depthBytesPerTexel = 4;
+    /// The dz/dxy target of stored derivatives (RG32F), when a technique reads them.
+    bool storesGradient = false;
+    /// Format of the filtered moments target (blurred, mipmapped), 0 when the technique stores none.
+    GLenum momentsFormat = 0;
+    std::size_t momentBytesPerTexel = 0;
+    /// What empty moments texels hold: the far plane's moments in the stored basis.
+    glm::vec4 momentsClear{1.0f};
+
+    /// The technique's own shader parameters (gsShadowTechniqueParameters).
+    glm::vec4 shaderParameters{0.0f};
+
+    /// Polygon offset on the casters (slopeScale, slopeUnits).
+    bool offsetsCasters = false;
+    /// The stratified jitter texture of jittered PCF is bound.
+    bool needsJitterTexture = false;
+};
+
+} // namespace shadows

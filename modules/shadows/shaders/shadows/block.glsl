@@ -1,0 +1,27 @@
+// The shadow module's per-frame scalars, read by the lighting pass and by the shadow pass (the technique's
+// parameters). Mirrors ShadowBlock (modules/shadows/src/ShadowBlock.h); binding 0 is the engine's FrameBlock,
+// whose GS_MAX_LIGHTS (frame.glsl) sizes the light slots.
+const int GS_SHADOW_MAX_MAPS = 4;
+
+layout(std140, binding = 1) uniform GsShadowBlock {
+    mat4 gsShadowMatrix[GS_SHADOW_MAX_MAPS];    // world -> shadow texture space (divide by w)
+    vec4 gsShadowTexel[GS_SHADOW_MAX_MAPS];     // x resolution, y 1/resolution, z texel scale, w perspective
+    ivec4 gsShadowSlots[GS_MAX_LIGHTS / 4];     // shadow map of each engine light, -1 for none
+    mat4 gsShadowMsmDequantize;                 // MSM 16-bit: inverse of the optimised basis
+    mat2 gsTapInverseCovariance;
+    vec4 gsShadowTechniqueParameters;           // the technique's own (ShadowTechniqueTraits::shaderParameters)
+    float gsShadowConstantBias;                 // world units towards the light
+    float gsShadowDepthStep;                    // depth format step (0 for float)
+    float gsShadowFuzzyScale;                   // GSM band width in texels
+    float gsShadowNormalOffset;                 // normal offset in texel sizes
+    float gsShadowMinimumVariance;              // VSM
+    float gsShadowBleedingReduction;            // VSM
+    float gsShadowMomentBias;                   // MSM
+    float gsShadowJitterRadius;                 // texels
+    int gsShadowReceiverPlaneClamp;
+    int gsJitterPairs;
+    int gsEarlyOutPairs;                        // 0: always the full kernel
+    int gsTapCount;
+    float gsTapDisplace;                        // circular-8 d, texels
+};
+

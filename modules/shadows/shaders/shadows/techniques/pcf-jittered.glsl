@@ -1,0 +1,31 @@
+// pcf-jittered: soft shadows reference: pairs of stratified offsets from the jitter texture, tiled over the screen.
+// With early-out, the first pairs are test taps; when they agree the pixel is not in a penumbra and the rest are
+// skipped. The result averages every tap actually taken (the reference's pseudo-code divides by the full count
+// either way, which darkens skipped pixels).
+#ifdef GS_SHADOW_JITTERED
+uniform sampler3D gsShadowJitter; // two stratified offsets per texel
+
+GsShadowSample gsShadowSample_Jittered(GsShadowLookup lookup) {
+    int slot = lookup.slot;
+    vec2 texel = lookup.texel;
+    ivec2 tile = ivec2(mod(gl_FragCoord.xy, 32.0));
+    float reference = gsShadowReference(lookup.depth);
+    float lit = 0.0;
+    int taken = 0;
+    for (int pair = 0; pair < gsJitterPairs; ++pair) {
+#ifdef GS_SHADOW_EARLY_OUT
+        if (pair == gsEarlyOutPairs && gsTestTapsAgree(lit, float(taken))) {
+            break;
+        }
+#endif
+        vec4 offsets = (texelFetch(gsShadowJitter, ivec3(tile, pair), 0) * 2.0 - 1.0) * gsShadowJitterRadius;
+        lit += texture(gsShadowMap[slot], vec3((texel + offsets.xy) * gsShadowTexel[slot].y, reference));
+        lit += texture(gsShadowMap[slot], vec3((texel + offsets.zw) * gsShadowTexel[slot].y, reference));
+        taken += 2;
+    }
+    GsShadowSample result = gsShadowResult(lit / float(max(taken, 1)), 1.0, lookup);
+    result.fullKernel = taken == 2 * gsJitterPairs;
+    return result;
+}
+#define gsShadowSample gsShadowSample_Jittered
+#endif

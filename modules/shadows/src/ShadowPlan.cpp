@@ -1,0 +1,118 @@
+#include <shadows/ShadowPlan.h>
+
+namespace shadows {
+
+namespace {
+
+GLenum glDepthFormat(DepthFormat format) {
+    switch (format) {
+    case DepthFormat::D16:
+        return GL_DEPTH_COMPONENT16;
+    case DepthFormat::D24:
+        return GL_DEPTH_COMPONENT24;
+    case DepthFormat::D32F:
+        return GL_DEPTH_COMPONENT32F;
+    }
+    return GL_DEPTH_COMPONENT24;
+}
+
+/// The technique's options that select shader code.
+void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
+    std::vector<std::string_view>& defines = plan.lightingDefines;
+    if (settings.technique == ShadowTechnique::ReceiverPlaneBias &&
+        settings.receiverPlaneKernel == ReceiverPlaneKernel::PerTap) {
+        defines.push_back("GS_SHADOW_RPB_PER_TAP");
+    }
+    if (settings.technique == ShadowTechnique::Msm && settings.msmQuantize16) {
+        defines.push_back("GS_SHADOW_MSM_QUANTIZED");
+        plan.depthDefines.push_back("GS_SHADOW_MSM_QUANTIZED");
+    }
+    if (plan.traits->jittered && settings.earlyOutTestTaps > 0) {
+        defines.push_back("GS_SHADOW_EARLY_OUT");
+    }
+    if (settings.technique == ShadowTechnique::PcfGsmAverageGradient) {
+        if (settings.averageGradientForm == AverageGradientForm::Circular8) {
+            defines.push_back("GS_SHADOW_AVG_CIRCULAR8");
+        } else if (settings.averageGradientForm == AverageGradientForm::Circular8Vec4) {
+            defines.push_back("GS_SHADOW_AVG_VEC4");
+        }
+    }
+    if (plan.sampler == MapSampler::CompareNearest || plan.sampler == MapSampler::CompareLinear) {
+        defines.push_back("GS_SHADOW_SAMPLER_COMPARE");
+    }
+    if (plan.traits->readsPointGradient) {
+        constexpr std::string_view kGradientDefines[] = {
+            "GS_SHADOW_GRADIENT_STORED", "GS_SHADOW_GRADIENT_CENTRAL", "GS_SHADOW_GRADIENT_SCREEN"};
+        defines.push_back(kGradientDefines[static_cast<std::size_t>(settings.gradientSource)]);
+    }
+    if (plan.usesTapPattern && settings.pcfRotate) {
+        defines.push_back("GS_SHADOW_ROTATE");
+    }
+    if (settings.floorReceiverDepth) {
+        defines.push_back("GS_SHADOW_FLOOR");
+    }
+    constexpr std::string_view kDebugDefines[] = {"",
+                                                  "GS_SHADOW_DEBUG_TEXELS",
+                                                  "GS_SHADOW_DEBUG_GRADIENT",
+                                                  "GS_SHADOW_DEBUG_BIAS",
+                                                  "GS_SHADOW_DEBUG_VISIBILITY",
+                                                  "GS_SHADOW_DEBUG_MAP",
+                                                  "GS_SHADOW_DEBUG_KERNEL"};
+    if (settings.debugView != ShadowDebugView::None) {
+        defines.push_back(kDebugDefines[static_cast<std::size_t>(settings.debugView)]);
+    }
+}
+
+std::size_t bytesPerTexel(GLenum format) {
+    switch (format) {
+    case GL_RG32F:
+    case GL_RGBA16:
+        return 8;
+    case GL_RGBA32F:
+        return 16;
+    default:
+        return 0;
+    }
+}
+
+} // namespace
+
+ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
+    ShadowPlan plan;
+    plan.traits = &traitsOf(settings.technique);
+    plan.sampler = plan.traits->sampler;
+    plan.usesTapPattern = plan.traits->usesTapPattern;
+    if (settings.technique == ShadowTechnique::ReceiverPlaneBias &&
+        settings.receiverPlaneKernel == ReceiverPlaneKernel::PerTap) {
+        plan.sampler = MapSampler::CompareNearest;
+        plan.usesTapPattern = true;
+    }
+    plan.lightingDefines = {"GS_SHADOWS"};
+    for (const std::string_view define : plan.traits->defines) {
+        if (!define.empty()) {
+            plan.lightingDefines.push_back(define);
+        }
+    }
+    plan.storesGradient =
+        plan.traits->readsPointGradient && settings.gradientSource == GradientSource::StoredDerivatives;
+    if (plan.storesGradient) {
+        plan.depthDefines.push_back("GS_SHADOW_STORE_GRADIENT");
+    }
+    addOptionDefines(settings, plan);
+    if (const MomentStore& moments = plan.traits->moments; moments.format) {
+        plan.momentsFormat = moments.format(settings);
+        plan.momentBytesPerTexel = bytesPerTexel(plan.momentsFormat);
+        plan.momentsClear = moments.farPlane(settings);
+        plan.depthDefines.push_back(moments.define);
+    }
+    if (plan.traits->shaderParameters) {
+        plan.shaderParameters = plan.traits->shaderParameters(settings);
+    }
+    plan.depthFormat = glDepthFormat(settings.depthFormat);
+    plan.depthBytesPerTexel = settings.depthFormat == DepthFormat::D16 ? 2 : 4;
+    plan.offsetsCasters = plan.traits->offsetsCasters;
+    plan.needsJitterTexture = plan.traits->jittered;
+    return plan;
+}
+
+} // namespace shadows

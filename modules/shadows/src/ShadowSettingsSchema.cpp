@@ -1,0 +1,346 @@
+#include <shadows/ShadowPlan.h>
+#include <shadows/ShadowSettingsSchema.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace shadows {
+
+namespace {
+
+using T = ShadowTechnique;
+using S = ShadowSettings;
+
+/// An EnumSetting over `Member`, with its enum's one name table.
+template <typename Enum, Enum ShadowSettings::*Member>
+EnumSetting choice() {
+    std::vector<std::string_view> names;
+    for (const EnumName<Enum>& entry : enumNames<Enum>()) {
+        names.push_back(entry.name);
+    }
+    return {std::move(names), [](const S& s) { return static_cast<int>(s.*Member); },
+            [](S& s, int index) { s.*Member = enumNames<Enum>()[static_cast<std::size_t>(index)].value; }};
+}
+
+std::string formatNumber(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+bool always(const S&) {
+    return true;
+}
+bool usesTaps(const S& s) {
+    return ShadowPlan::resolve(s).usesTapPattern;
+}
+/// The circular-8 forms of the average gradient bring their own 8-tap layout (ShadowSettings::tapPattern).
+bool layoutForced(const S& s) {
+    return s.technique == T::PcfGsmAverageGradient &&
+           s.averageGradientForm != AverageGradientForm::LeastSquares;
+}
+bool offsetsCasters(const S& s) {
+    return traitsOf(s.technique).offsetsCasters;
+}
+bool readsPointGradient(const S& s) {
+    return traitsOf(s.technique).readsPointGradient;
+}
+bool comparesInHardware(const S& s) {
+    const MapSampler sampler = ShadowPlan::resolve(s).sampler;
+    return sampler == MapSampler::CompareNearest || sampler == MapSampler::CompareLinear;
+}
+bool filtersMoments(const S& s) {
+    return traitsOf(s.technique).moments.format != nullptr;
+}
+bool comparesFuzzily(const S& s) {
+    return traitsOf(s.technique).fuzzyComparison;
+}
+bool chebyshevBound(const S& s) {
+    return traitsOf(s.technique).chebyshevBound;
+}
+bool jittered(const S& s) {
+    return traitsOf(s.technique).jittered;
+}
+template <ShadowTechnique Technique>
+bool only(const S& s) {
+    return s.technique == Technique;
+}
+
+std::optional<IntLimits> fixed(IntLimits limits) {
+    return limits;
+}
+
+const std::vector<SettingRow>& rows() {
+    static const std::vector<SettingRow> table = {
+        {"technique", "", "technique", "Visibility function (see the techniques table).",
+         choice<ShadowTechnique, &S::technique>(), always, "--technique"},
+        {"resolution", "texels", "shadow map", "Width and height of the shadow map.",
+         IntSetting{&S::resolution,
+                    [](const S&) { return fixed({.min = 64, .max = 16384, .powersOfTwo = true}); }},
+         always, "--shadow-size"},
+        {"depthFormat", "", "depth format", "Depth format of the shadow map.",
+         choice<DepthFormat, &S::depthFormat>(), always, "--depth-format"},
+        {"casterFaces", "", "caster faces", "Faces (as seen from the light) drawn into the shadow map.",
+         choice<CasterFaces, &S::casterFaces>(), always},
+        {"constantBias", "world units", "constant bias",
+         "Receiver moved towards the light before the comparison.",
+         FloatSetting{&S::constantBias, {}, 0.0f, 0.1f, "%.5f", true}, always},
+        {"slopeScale", "", "slope scale", "glPolygonOffset factor on the casters (scales their depth slope).",
+         FloatSetting{&S::slopeScale, {}, 0.0f, 8.0f, "%.2f"}, offsetsCasters},
+        {"slopeUnits", "", "slope units",
+         "glPolygonOffset units (multiples of the format's resolvable step).",
+         FloatSetting{&S::slopeUnits, {}, 0.0f, 16.0f, "%.2f"}, offsetsCasters},
+        {"averageGradientForm", "", "average gradient form",
+         "Least squares over any pattern, or the reference's circular-8 forms (which bring their own "
+         "layout).",
+         choice<AverageGradientForm, &S::averageGradientForm>(), only<T::PcfGsmAverageGradient>},
+        {"pcfLayout", "", "PCF layout", "Layout of the PCF taps.", choice<TapLayout, &S::pcfLayout>(),
+         [](const S& s) { return usesTaps(s) && !layoutForced(s); }},
+        {"pcfTaps", "", "PCF taps", "Taps per side of a grid, or the number of Poisson taps.",
+         IntSetting{&S::pcfTaps,
+                    [](const S& s) -> std::optional<IntLimits> {
+                        if (s.pcfLayout == TapLayout::Grid) {
+                            return IntLimits{.min = 2, .max = 8, .qualifier = "for a grid"};
+                        }
+                        if (s.pcfLayout == TapLayout::Poisson) {
+                            return IntLimits{.min = 8, .max = 64, .qualifier = "for a Poisson disk"};
+                        }
+                        return std::nullopt; // circular-8 has its own count
+                    }},
+         [](const S& s) { return usesTaps(s) && !layoutForced(s) && s.pcfLayout != TapLayout::Circular8; }},
+        {"pcfRadius", "texels", "PCF radius", "Radius of the tap pattern (and of the jittered offsets).",
+         FloatSetting{&S::pcfRadius, {.minExclusive = true}, 0.5f, 8.0f, "%.2f"},
+         [](const S& s) { return usesTaps(s) || jittered(s); }},
+        {"pcfRotate", "", "rotate pattern per pixel",
+         "Trades banding for noise (interleaved gradient noise).", BoolSetting{&S::pcfRotate}, usesTaps},
+        {"gradientSource", "", "gradient source", "Where the fragment's depth gradient comes from.",
+         choice<GradientSource, &S::gradientSource>(), readsPointGradient},
+        {"fuzzyScale", "texels", "fuzzy scale", "Width of the GSM fuzzy comparison band.",
+         FloatSetting{&S::fuzzyScale, {.minExclusive = true}, 0.1f, 8.0f, "%.2f", true}, comparesFuzzily},
+        {"receiverPlaneKernel", "", "receiver-plane kernel", "2x2 bilinear gather, or one bias per PCF tap.",
+         choice<ReceiverPlaneKernel, &S::receiverPlaneKernel>(), only<T::ReceiverPlaneBias>},
+        {"receiverPlaneClamp", "", "clamp bias to min(0, bias)",
+         "Only let the bias move receivers towards the light.", BoolSetting{&S::receiverPlaneClamp},
+         only<T::ReceiverPlaneBias>},
+        {"normalOffsetTexels", "texels", "normal offset", "Receiver pushed along its normal, in texel sizes.",
+         FloatSetting{&S::normalOffsetTexels, {}, 0.0f, 8.0f, "%.2f"}, only<T::NormalOffset>},
+        {"floorReceiverDepth", "", "floor receiver depth",
+         "Floor the reference to the format's step so the hardware comparison's rounding adds no acne.",
+         BoolSetting{&S::floorReceiverDepth}, comparesInHardware},
+        {"momentBlurRadius", "texels", "moment blur", "Half-width of the separable box blur of the moments.",
+         IntSetting{&S::momentBlurRadius, [](const S&) { return fixed({.min = 0, .max = 16}); }},
+         filtersMoments},
+        {"vsmMinimumVariance", "depth units squared", "minimum variance",
+         "Smallest variance the Chebyshev bound uses.",
+         FloatSetting{&S::vsmMinimumVariance, {}, 0.0f, 1e-3f, "%.2e", true}, chebyshevBound},
+        {"lightBleedingReduction", "", "light-bleeding reduction",
+         "Tail of the Chebyshev bound cut off (linstep).",
+         FloatSetting{&S::lightBleedingReduction, {.max = 0.95f}, 0.0f, 0.95f, "%.2f"}, chebyshevBound},
+        {"msmMomentBias", "", "moment bias",
+         "Bias of the moments towards (0, 0.63, 0, 0.63); more hides numerical trouble, leaks more light.",
+         FloatSetting{&S::msmMomentBias, {.max = 0.5f}, 0.0f, 0.05f, "%.2e", true}, only<T::Msm>},
+        {"msmQuantize16", "", "16-bit moments",
+         "Store the moments in 16-bit unorm through the optimised basis (64 bits per texel).",
+         BoolSetting{&S::msmQuantize16}, only<T::Msm>},
+        {"evsmPositiveExponent", "", "positive exponent",
+         "c+ of the warp exp(c+ d): larger cuts more light bleeding; 42 at most keeps exp(2 c+) in float32.",
+         FloatSetting{&S::evsmPositiveExponent,
+                      {.min = 0.0f, .max = 42.0f, .minExclusive = true},
+                      1.0f,
+                      42.0f,
+                      "%.1f"},
+         only<T::Evsm>},
+        {"evsmNegativeExponent", "", "negative exponent",
+         "c- of the warp -exp(-c- d): bounds the receivers the positive warp lets light through.",
+         FloatSetting{&S::evsmNegativeExponent,
+                      {.min = 0.0f, .max = 42.0f, .minExclusive = true},
+                      1.0f,
+                      42.0f,
+                      "%.1f"},
+         only<T::Evsm>},
+        {"jitterTaps", "", "jittered taps", "Stratified taps per pixel (two per jitter texel).",
+         IntSetting{&S::jitterTaps, [](const S&) { return fixed({.min = 8, .max = 64, .step = 2}); }},
+         jittered},
+        {"earlyOutTestTaps", "", "early-out test taps",
+         "Taps taken before deciding whether the pixel needs the full kernel; 0 always takes the full "
+         "kernel.",
+         IntSetting{&S::earlyOutTestTaps,
+                    [](const S& s) {
+                        // Fewer test taps than the kernel has, so the early-out can save something.
+                        return fixed({.min = 4,
+                                      .max = std::min(16, s.jitterTaps - 1),
+                                      .step = 2,
+                                      .zeroAllowed = true,
+                                      .qualifier = "and below jitterTaps"});
+                    }},
+         jittered},
+        {"texelSnapping", "", "snap to texels",
+         "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
+         BoolSetting{&S::texelSnapping}, always},
+        {"debugView", "", "debug view", "What the lighting pass shows instead of the shaded colour.",
+         choice<ShadowDebugView, &S::debugView>(), always, "--debug-view"},
+    };
+    return table;
+}
+
+} // namespace
+
+bool FloatLimits::contains(float value) const {
+    return std::isfinite(value) && (minExclusive ? value > min : value >= min) && value <= max;
+}
+
+bool IntLimits::contains(int value) const {
+    return (zeroAllowed && value == 0) || (value >= min && value <= max && (value - min) % step == 0);
+}
+
+std::vector<int> IntLimits::offered() const {
+    std::vector<int> values;
+    if (zeroAllowed) {
+        values.push_back(0);
+    }
+    for (int value = min; value <= max; value = powersOfTwo ? value * 2 : value + step) {
+        values.push_back(value);
+    }
+    return values;
+}
+
+std::string IntLimits::describe() const {
+    std::string text = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    if (step > 1) {
+        text += " in steps of " + std::to_string(step);
+    }
+    return zeroAllowed ? "0, or " + text : text;
+}
+
+std::string EnumSetting::nameList() const {
+    std::string list;
+    for (const std::string_view name : names) {
+        list += (list.empty() ? "" : ", ") + std::string(name);
+    }
+    return list;
+}
+
+std::optional<std::string> SettingRow::problem(const ShadowSettings& settings) const {
+    const std::string qualified(name);
+    if (const auto* real = std::get_if<FloatSetting>(&field)) {
+        if (real->valid.contains(settings.*real->member)) {
+            return std::nullopt;
+        }
+        return qualified + " must be " + rangeText() + (unit.empty() ? "" : " (" + std::string(unit) + ")");
+    }
+    if (const auto* integer = std::get_if<IntSetting>(&field)) {
+        const int value = settings.*integer->member;
+        const std::optional<IntLimits> limits = integer->limits(settings);
+        if (!limits || limits->contains(value)) {
+            return std::nullopt;
+        }
+        return qualified + " " + std::to_string(value) + " is outside " + limits->describe() +
+               (limits->qualifier.empty() ? "" : " " + std::string(limits->qualifier));
+    }
+    return std::nullopt; // booleans and enum values read through the name tables are always valid
+}
+
+std::string SettingRow::valueText(const ShadowSettings& settings) const {
+    if (const auto* real = std::get_if<FloatSetting>(&field)) {
+        return formatNumber(settings.*real->member);
+    }
+    if (const auto* integer = std::get_if<IntSetting>(&field)) {
+        return std::to_string(settings.*integer->member);
+    }
+    if (const auto* toggle = std::get_if<BoolSetting>(&field)) {
+        return settings.*toggle->member ? "true" : "false";
+    }
+    const auto& choice = std::get<EnumSetting>(field);
+    return std::string(choice.names[static_cast<std::size_t>(choice.get(settings))]);
+}
+
+std::string SettingRow::rangeText() const {
+    if (const auto* real = std::get_if<FloatSetting>(&field)) {
+        const FloatLimits& valid = real->valid;
+        if (std::isinf(valid.max)) {
+            return std::string("a finite number ") + (valid.minExclusive ? "> " : ">= ") +
+                   formatNumber(valid.min);
+        }
+        return "in [" + formatNumber(valid.min) + ", " + formatNumber(valid.max) + "]";
+    }
+    if (const auto* integer = std::get_if<IntSetting>(&field)) {
+        // Limits that depend on a choice (pcfTaps on the layout): one description per distinct case.
+        std::vector<ShadowSettings> cases{ShadowSettings{}};
+        for (const SettingRow& other : rows()) {
+            if (const auto* choice = std::get_if<EnumSetting>(&other.field)) {
+                for (int index = 0; index < static_cast<int>(choice->names.size()); ++index) {
+                    choice->set(cases.emplace_back(), index);
+                }
+            }
+        }
+        std::string text;
+        for (const ShadowSettings& settings : cases) {
+            const std::optional<IntLimits> limits = integer->limits(settings);
+            const std::string one =
+                limits ? limits->describe() +
+                             (limits->qualifier.empty() ? "" : " " + std::string(limits->qualifier))
+                       : "";
+            if (!one.empty() && text.find(one) == std::string::npos) {
+                text += (text.empty() ? "" : "; ") + one;
+            }
+        }
+        return text;
+    }
+    if (std::holds_alternative<BoolSetting>(field)) {
+        return "true, false";
+    }
+    return std::get<EnumSetting>(field).nameList();
+}
+
+std::string SettingRow::labelWithUnit() const {
+    return unit.empty() ? std::string(label) : std::string(label) + " (" + std::string(unit) + ")";
+}
+
+std::span<const SettingRow> settingsSchema() {
+    return rows();
+}
+
+const SettingRow* findSetting(std::string_view name) {
+    for (const SettingRow& row : rows()) {
+        if (row.name == name) {
+            return &row;
+        }
+    }
+    return nullptr;
+}
+
+IntLimits integerLimits(std::string_view name, const ShadowSettings& settings) {
+    const SettingRow* row = findSetting(name);
+    const auto* integer = row ? std::get_if<IntSetting>(&row->field) : nullptr;
+    const std::optional<IntLimits> limits = integer ? integer->limits(settings) : std::nullopt;
+    if (!limits) {
+        throw std::logic_error("shadow settings: '" + std::string(name) + "' has no integer limits here");
+    }
+    return *limits;
+}
+
+std::string settingsMarkdownTable() {
+    std::string table = "| field | unit | default | accepts | applies to | what |\n"
+                        "| --- | --- | --- | --- | --- | --- |\n";
+    const ShadowSettings defaults;
+    for (const SettingRow& row : rows()) {
+        // The techniques whose default options the field applies to.
+        std::string techniques;
+        std::size_t count = 0;
+        for (const EnumName<ShadowTechnique>& entry : enumNames<ShadowTechnique>()) {
+            ShadowSettings settings;
+            settings.technique = entry.value;
+            if (row.applies(settings)) {
+                techniques += (techniques.empty() ? "" : ", ") + std::string(entry.name);
+                ++count;
+            }
+        }
+        table += "| `" + std::string(row.name) + "` | " + std::string(row.unit) + " | `" +
+                 row.valueText(defaults) + "` | " + row.rangeText() + " | " +
+                 (count == kTechniqueCount ? "all" : techniques) + " | " + std::string(row.help) + " |\n";
+    }
+    return table;
+}
+
+} // namespace shadows

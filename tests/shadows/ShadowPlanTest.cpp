@@ -1,0 +1,83 @@
+// The plan: a technique's row resolved against its options, once (no GL).
+#include <shadows/ShadowPlan.h>
+#include <shadows/VisibilityMath.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace shadows;
+
+namespace {
+
+bool has(const std::vector<std::string_view>& defines, std::string_view define) {
+    return std::count(defines.begin(), defines.end(), define) == 1;
+}
+
+} // namespace
+
+TEST(ShadowPlanTest, DefinesFollowOptionsOnlyWhereTheyApply) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::HardCompare};
+    settings.pcfRotate = true; // no pattern: no rotation variant
+    ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_FALSE(has(plan.lightingDefines, "GS_SHADOW_ROTATE"));
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_SAMPLER_COMPARE"));
+    EXPECT_TRUE(plan.depthDefines.empty());
+
+    settings.technique = ShadowTechnique::Gsm;
+    settings.gradientSource = GradientSource::ScreenSpace;
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_GRADIENT_SCREEN"));
+    EXPECT_FALSE(has(plan.lightingDefines, "GS_SHADOW_SAMPLER_COMPARE"));
+    EXPECT_FALSE(plan.storesGradient);
+
+    settings.gradientSource = GradientSource::StoredDerivatives;
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_TRUE(plan.storesGradient);
+    EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_STORE_GRADIENT"));
+}
+
+TEST(ShadowPlanTest, ReceiverPlanePerTapComparesInHardwareOverThePattern) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::ReceiverPlaneBias};
+    EXPECT_EQ(ShadowPlan::resolve(settings).sampler, MapSampler::DepthLinear);
+    EXPECT_FALSE(ShadowPlan::resolve(settings).usesTapPattern);
+    settings.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
+    const ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.sampler, MapSampler::CompareNearest);
+    EXPECT_TRUE(plan.usesTapPattern);
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_RPB_PER_TAP"));
+}
+
+TEST(ShadowPlanTest, QuantisedMomentsAreDeclaredOnceForBothPasses) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::Msm};
+    ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RGBA32F));
+    EXPECT_EQ(plan.momentBytesPerTexel, 16u);
+    EXPECT_EQ(plan.momentsClear, glm::vec4(1.0f));
+    settings.msmQuantize16 = true;
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RGBA16));
+    EXPECT_EQ(plan.momentBytesPerTexel, 8u);
+    EXPECT_EQ(plan.momentsClear, glsl::gsMsmQuantize(glm::vec4(1.0f)));
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_MSM_QUANTIZED"));
+    EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_MSM_QUANTIZED"));
+    EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_STORE_MOMENTS4"));
+}
+
+TEST(ShadowPlanTest, DepthFormatsAndCasterOffsets) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::SlopeScaledBias};
+    settings.depthFormat = DepthFormat::D16;
+    ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.depthFormat, static_cast<GLenum>(GL_DEPTH_COMPONENT16));
+    EXPECT_EQ(plan.depthBytesPerTexel, 2u);
+    EXPECT_TRUE(plan.offsetsCasters);
+    EXPECT_FALSE(plan.needsJitterTexture);
+    settings = ShadowSettings{.technique = ShadowTechnique::JitteredPcf};
+    settings.depthFormat = DepthFormat::D32F;
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.depthFormat, static_cast<GLenum>(GL_DEPTH_COMPONENT32F));
+    EXPECT_TRUE(plan.needsJitterTexture);
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_EARLY_OUT"));
+    settings.earlyOutTestTaps = 0;
+    EXPECT_FALSE(has(ShadowPlan::resolve(settings).lightingDefines, "GS_SHADOW_EARLY_OUT"));
+}
