@@ -11,6 +11,7 @@ packages=(
     libgtest-dev libbenchmark-dev libimgui-dev xvfb python3 python3-matplotlib nlohmann-json3-dev
     libopenscenegraph-dev # optional: gs-osgshadow, the osgShadow peer (tools/osgpeer)
     assimp-utils assimp-testmodels # the real-model corpus (tools/corpus.sh)
+    nodejs npm # the Khronos glTF-Validator (tools/gltf-validate), run on every glTF we write
     clang libclang-rt-14-dev llvm # sanitizer build and libFuzzer targets; llvm gives llvm-symbolizer
 )
 
@@ -21,16 +22,22 @@ for package in "${packages[@]}"; do
     fi
 done
 
-if ((${#missing[@]} == 0)); then
-    exit 0
+if ((${#missing[@]} > 0)); then
+    echo "setup: installing ${missing[*]}"
+    sudo=""
+    if [[ $(id -u) -ne 0 ]]; then
+        command -v sudo >/dev/null || { echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+        sudo="sudo"
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -qq
+    $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-echo "setup: installing ${missing[*]}"
-sudo=""
-if [[ $(id -u) -ne 0 ]]; then
-    command -v sudo >/dev/null || { echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
-    sudo="sudo"
+# The glTF-Validator from the npm registry, at the version package-lock.json pins.
+validator="$(dirname "$0")/gltf-validate"
+if [[ ! -d $validator/node_modules/gltf-validator ]]; then
+    echo "setup: installing the glTF-Validator (npm ci in $validator)"
+    (cd "$validator" && npm ci --no-audit --no-fund --loglevel=error) ||
+        echo "setup: warning: the glTF-Validator could not be installed; its test will say it is skipped" >&2
 fi
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
