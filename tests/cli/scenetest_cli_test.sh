@@ -27,7 +27,7 @@ expect good 0 "PASSED" -- "$tool" torus --technique gsm "${small[@]}" --out "$ou
 for file in report.txt classes.png error.png shaded.png; do
     [[ -s $out/good/$file ]] || { echo "FAIL $file missing"; failures=$((failures + 1)); }
 done
-expect badNamesTheBound 1 "FAILED: acne [0-9.]+ % > 0.05" -- "$tool" torus --technique hard "${small[@]}" --out "$out/bad"
+expect badNamesTheBound 1 "FAILED: acne [0-9.]+ % > 0.05 %;" -- "$tool" torus --technique hard "${small[@]}" --out "$out/bad"
 grep -q "acne .* EXCEEDED" "$out/bad/report.txt" || { echo "FAIL report lacks the exceeded bound"; failures=$((failures + 1)); }
 expect goldenSame 0 "golden 0 % of pixels differ" -- "$tool" torus --technique gsm "${small[@]}" \
     --golden "$out/good/shaded.png" --out "$out/same"

@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
             report << "  " << name << " " << percent(fraction) << " (bound " << maxPercent << " %) "
                    << (ok ? "ok" : "EXCEEDED") << "\n";
             if (!ok) {
-                violated.push_back(name + " " + percent(fraction) + " > " + std::to_string(maxPercent) + " %");
+                violated.push_back(name + " " + percent(fraction) + " > " + percent(maxPercent / 100.0));
             }
         };
         bound("acne", m.acneRate, options.maxAcne);
