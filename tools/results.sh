@@ -66,17 +66,18 @@ done
 "$bench" "${sweep[@]}" --techniques gsm --resolutions 2048 --frames 5 --peer "$work/osg" --out "$work/scaling"
 
 # 6. What the renderer's options do, side by side in one run (gs-render, whole frames): the depth pre-pass, glibc's
-#    default allocator thresholds instead of the tuned ones, and meshes drawn whole instead of in chunks.
+#    default allocator thresholds instead of the tuned ones, and meshes drawn whole instead of in chunks; the
+#    defaults run twice, so the table shows how far two identical runs differ.
 for model in knob fzk-haus cylinder-engine suzanne terrain; do
     for technique in none gsm pcf-gsm-average; do
-        for variant in plain prepass default-allocator unchunked; do
+        for variant in plain prepass default-allocator unchunked plain-again; do
             case $variant in
-                plain) options=() ;;
+                plain | plain-again) options=() ;;
                 prepass) options=(--depth-prepass) ;;
                 default-allocator) options=(--allocator default) ;;
                 unchunked) options=(--chunk-triangles 16777216) ;;
             esac
-            ./build/bin/gs-render --scene "$model" --technique "$technique" --size 640x480 --frames 9 \
+            ./build/bin/gs-render --scene "$model" --technique "$technique" --size 640x480 --frames 15 \
                 "${options[@]}" --out "$work/engine/$model/$technique-$variant" >/dev/null
         done
     done

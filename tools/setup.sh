@@ -11,7 +11,7 @@ packages=(
     libgtest-dev libbenchmark-dev libimgui-dev xvfb python3 python3-matplotlib nlohmann-json3-dev
     libopenscenegraph-dev # optional: gs-osgshadow, the osgShadow peer (tools/osgpeer)
     assimp-utils assimp-testmodels # the real-model corpus (tools/corpus.sh)
-    nodejs npm # the Khronos glTF-Validator (tools/gltf-validate), run on every glTF we write
+    nodejs # the Khronos glTF-Validator (tools/gltf-validate), run on every glTF we write; npm below
     clang libclang-rt-14-dev llvm # sanitizer build and libFuzzer targets; llvm gives llvm-symbolizer
 )
 
@@ -21,6 +21,9 @@ for package in "${packages[@]}"; do
         missing+=("$package")
     fi
 done
+
+# Debian's npm, unless npm is already there (a Node.js build that bundles it conflicts with Debian's package).
+command -v npm >/dev/null || missing+=(npm)
 
 if ((${#missing[@]} > 0)); then
     echo "setup: installing ${missing[*]}"

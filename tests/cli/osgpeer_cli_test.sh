@@ -8,23 +8,9 @@ content=$2
 out=$3
 rm -rf "$out"
 mkdir -p "$out"
-failures=0
+source "$(dirname "$0")/expect.sh"
 python=/usr/bin/python3
 
-expect() { # expect NAME EXPECTED_STATUS MESSAGE_PATTERN -- command...
-    local name=$1 status=$2 pattern=$3
-    shift 4
-    local output
-    output=$("$@" 2>&1)
-    local actual=$?
-    if [[ $actual -ne $status ]] || ! grep -qE -e "$pattern" <<<"$output"; then
-        echo "FAIL $name: status $actual (wanted $status), output:"
-        echo "$output"
-        failures=$((failures + 1))
-    else
-        echo "ok   $name"
-    fi
-}
 
 # Checks PREFIX.json's fields, that PREFIX.visibility.pfm is a WxH single-channel PFM with valid values in
 # [0, 1] (or -1 for no lit surface), and that the frame has both shadowed (< 0.5) and lit (> 0.9) pixels.

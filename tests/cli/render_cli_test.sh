@@ -4,22 +4,8 @@ set -u
 render=$1
 out=$2
 rm -rf "$out"
-failures=0
+source "$(dirname "$0")/expect.sh"
 
-expect() { # expect NAME EXPECTED_STATUS MESSAGE_PATTERN -- command...
-    local name=$1 status=$2 pattern=$3
-    shift 4
-    local output
-    output=$("$@" 2>&1)
-    local actual=$?
-    if [[ $actual -ne $status ]] || ! grep -qE -e "$pattern" <<<"$output"; then
-        echo "FAIL $name: status $actual (wanted $status), output:"
-        echo "$output"
-        failures=$((failures + 1))
-    else
-        echo "ok   $name"
-    fi
-}
 
 expect renders 0 "wrote .*knob.png" -- "$render" --out "$out" --size 160x120 --frames 2
 [[ -s $out/knob.png && -s $out/report.json ]] || { echo "FAIL outputs missing"; failures=$((failures + 1)); }

@@ -72,14 +72,9 @@ Needs an X display with GLX (e.g. xvfb-run -a -s "-screen 0 1280x1024x24").)";
 
 Options parse(int argc, char** argv) {
     Options options;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) {
-                usageError(arg + " needs a value");
-            }
-            return argv[++i];
-        };
+    for (cli::ArgumentList arguments(argc, argv); arguments.next();) {
+        const std::string arg = arguments.current();
+        const auto value = [&] { return arguments.value(); };
         if (arg == "--help") {
             std::cout << kUsage << "\n";
             std::exit(0);

@@ -133,14 +133,9 @@ Options parse(int argc, char** argv) {
     Options options;
     shadows::ShadowSettings settings;
     bool shadowsOn = true;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) {
-                usageError(arg + " needs a value");
-            }
-            return argv[++i];
-        };
+    for (cli::ArgumentList arguments(argc, argv); arguments.next();) {
+        const std::string arg = arguments.current();
+        const auto value = [&] { return arguments.value(); };
         if (arg == "--help") {
             std::cout << usage() << "\n";
             std::exit(0);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 /// @brief Values of command-line options, shared by the project's CLIs. Each throws std::invalid_argument
 /// whose message names the option and the text, e.g. "--size: '0' is not an integer in [1, 16384]".
@@ -51,6 +52,29 @@ inline glm::ivec2 sizeIn(std::string_view option, const std::string& text, int l
     return {integerIn(option, text.substr(0, x), low, high),
             integerIn(option, text.substr(x + 1), low, high)};
 }
+
+/// @brief A command line's arguments in order, for option loops: `next()` moves to the next argument and
+/// `value()` takes the argument after the current option.
+class ArgumentList {
+public:
+    ArgumentList(int argc, char** argv) : arguments_(argv + 1, argv + argc) {}
+
+    /// @brief Moves to the next argument; false after the last.
+    bool next() { return ++index_ < arguments_.size(); }
+    [[nodiscard]] const std::string& current() const { return arguments_[index_]; }
+    /// @brief The current option's value (the next argument). Throws std::invalid_argument("<option> needs a
+    /// value") after the last argument.
+    std::string value() {
+        if (index_ + 1 >= arguments_.size()) {
+            throw std::invalid_argument(current() + " needs a value");
+        }
+        return arguments_[++index_];
+    }
+
+private:
+    std::vector<std::string> arguments_;
+    std::size_t index_ = static_cast<std::size_t>(-1); // before the first
+};
 
 /// @brief Whether a --scene value names a file (it has a folder or a glTF extension) rather than a content
 /// scene.
