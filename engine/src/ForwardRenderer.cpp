@@ -157,8 +157,8 @@ std::size_t ForwardRenderer::meshBytes() const {
     return bytes;
 }
 
-void ForwardRenderer::forEachMeshBounds(const Scene& scene,
-                                        const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) {
+void ForwardRenderer::forEachMeshBounds(
+    const Scene& scene, const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) {
     scene.forEach([&](EntityId id, const Entity& entity) {
         if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->positions.empty()) {
             return;
@@ -191,9 +191,10 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
         gpu.vertexArray.bind();
         for (const MeshChunk* chunk : visible) {
             // The range tells the driver which vertices the draw reads: only the chunk's own.
-            glDrawRangeElements(GL_TRIANGLES, chunk->firstVertex, chunk->firstVertex + chunk->vertexCount - 1,
-                                static_cast<GLsizei>(chunk->indexCount), GL_UNSIGNED_INT,
-                                reinterpret_cast<const void*>(std::uintptr_t{chunk->firstIndex} * sizeof(std::uint32_t)));
+            glDrawRangeElements(
+                GL_TRIANGLES, chunk->firstVertex, chunk->firstVertex + chunk->vertexCount - 1,
+                static_cast<GLsizei>(chunk->indexCount), GL_UNSIGNED_INT,
+                reinterpret_cast<const void*>(std::uintptr_t{chunk->firstIndex} * sizeof(std::uint32_t)));
             ++stats.drawCalls;
             stats.triangles += chunk->indexCount / 3;
         }
@@ -206,33 +207,35 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
     const ShaderVariantKey outputBits = output == OutputMode::WorldPosition ? worldPositionFlag_
                                         : output == OutputMode::WorldNormal ? worldNormalFlag_
                                                                             : 0;
-    const ShaderVariantKey sceneBits = (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits | lightCountBits_;
-    const FrameStats drawn = drawMeshes(frame.scene, frame.viewProjection, [&](EntityId id, const glm::mat4& model) {
-        if (depthOnly) {
-            programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
+    const ShaderVariantKey sceneBits =
+        (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits | lightCountBits_;
+    const FrameStats drawn =
+        drawMeshes(frame.scene, frame.viewProjection, [&](EntityId id, const glm::mat4& model) {
+            if (depthOnly) {
+                programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
+                return true;
+            }
+            const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
+            const DrawContext draw{frame, id, mesh, model};
+            ShaderVariantKey key = sceneBits;
+            if (mesh.normals.size() != mesh.positions.size()) {
+                key |= flatNormalsFlag_;
+            }
+            for (const Module* module : modules) {
+                key |= module->variantBits(draw);
+            }
+            const gl::Program& program = programs_.get(kForwardProgram, key);
+            program.use();
+            program.set("uModel", model);
+            program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
+            program.set("uBaseColor", mesh.material.baseColor);
+            program.set("uSpecularColor", mesh.material.specularColor);
+            program.set("uShininess", mesh.material.shininess);
+            for (Module* module : modules) {
+                module->bindLightingResources(program, draw);
+            }
             return true;
-        }
-        const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
-        const DrawContext draw{frame, id, mesh, model};
-        ShaderVariantKey key = sceneBits;
-        if (mesh.normals.size() != mesh.positions.size()) {
-            key |= flatNormalsFlag_;
-        }
-        for (const Module* module : modules) {
-            key |= module->variantBits(draw);
-        }
-        const gl::Program& program = programs_.get(kForwardProgram, key);
-        program.use();
-        program.set("uModel", model);
-        program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
-        program.set("uBaseColor", mesh.material.baseColor);
-        program.set("uSpecularColor", mesh.material.specularColor);
-        program.set("uShininess", mesh.material.shininess);
-        for (Module* module : modules) {
-            module->bindLightingResources(program, draw);
-        }
-        return true;
-    });
+        });
     if (!depthOnly) {
         stats.drawCalls += drawn.drawCalls;
         stats.triangles += drawn.triangles;

@@ -30,13 +30,14 @@ void GlContext::applyAllocatorPolicy(const ContextOptions& options) {
     if (!options.tuneAllocatorForSoftwareRenderer || !isSoftwareRenderer()) {
         return;
     }
-    // llvmpipe allocates per-draw vertex buffers and per-frame bin storage of a few MiB. glibc serves blocks over
-    // its mmap threshold with fresh mappings and gives the top of the heap back beyond its trim threshold, so
-    // each frame would fault the same pages in again. 32 MiB is the largest mmap threshold glibc accepts on
-    // 64-bit; setting either value also stops glibc's dynamic adjustment.
+    // llvmpipe allocates per-draw vertex buffers and per-frame bin storage of a few MiB. glibc serves blocks
+    // over its mmap threshold with fresh mappings and gives the top of the heap back beyond its trim
+    // threshold, so each frame would fault the same pages in again. 32 MiB is the largest mmap threshold
+    // glibc accepts on 64-bit; setting either value also stops glibc's dynamic adjustment.
     constexpr int kMmapThreshold = 32 << 20;
     constexpr int kTrimThreshold = 512 << 20;
-    allocatorTuned_ = mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 && mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
+    allocatorTuned_ =
+        mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 && mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1;
 }
 
 } // namespace engine

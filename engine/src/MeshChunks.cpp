@@ -39,8 +39,8 @@ void partition(std::span<std::uint32_t> triangles, const std::vector<glm::vec3>&
     // Split at a multiple of maxTriangles near the middle, so leaves come out full.
     const std::size_t leavesNeeded = (triangles.size() + maxTriangles - 1) / maxTriangles;
     const std::size_t middle = (leavesNeeded / 2) * maxTriangles;
-    std::nth_element(triangles.begin(), triangles.begin() + static_cast<std::ptrdiff_t>(middle), triangles.end(),
-                     [&](std::uint32_t a, std::uint32_t b) {
+    std::nth_element(triangles.begin(), triangles.begin() + static_cast<std::ptrdiff_t>(middle),
+                     triangles.end(), [&](std::uint32_t a, std::uint32_t b) {
                          return centroids[a][axis] < centroids[b][axis] ||
                                 (centroids[a][axis] == centroids[b][axis] && a < b);
                      });
@@ -73,7 +73,8 @@ ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
         partition(order, centroids, maxTriangles, leaves);
     }
 
-    // Each chunk numbers the vertices it uses in first-use order; `seenIn` says which chunk numbered a vertex.
+    // Each chunk numbers the vertices it uses in first-use order; `seenIn` says which chunk numbered a
+    // vertex.
     constexpr std::uint32_t kUnseen = std::numeric_limits<std::uint32_t>::max();
     std::vector<std::uint32_t> seenIn(mesh.positions.size(), kUnseen);
     std::vector<std::uint32_t> chunkedIndex(mesh.positions.size(), 0);

@@ -6,8 +6,8 @@
 
 namespace sandbox {
 
-/// @brief The content scenes (content/scenes/NAME.gltf), the real-model corpus (corpus/NAME.glb, when built) and
-/// how scene names given by people resolve to files.
+/// @brief The content scenes (content/scenes/NAME.gltf), the real-model corpus (corpus/NAME.glb, when built)
+/// and how scene names given by people resolve to files.
 class SceneCatalog {
 public:
     explicit SceneCatalog(std::filesystem::path contentFolder);

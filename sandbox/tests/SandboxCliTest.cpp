@@ -85,8 +85,7 @@ TEST(SandboxCliTest, SchemaInvalidGltfExits1NamingTheMember) {
 }
 
 TEST(SandboxCliTest, UnknownSceneExits2) {
-    expectFailure("--headless --scene nope", 2,
-                  "--scene: unknown scene 'nope' (scenes: bowl, crease-cube,");
+    expectFailure("--headless --scene nope", 2, "--scene: unknown scene 'nope' (scenes: bowl, crease-cube,");
     expectFailure("--headless --scene /nonexistent/x.gltf", 2,
                   "--scene: scene file '/nonexistent/x.gltf' does not exist");
 }

@@ -222,9 +222,10 @@ class GltfWrongTypeTest : public GltfTest, public testing::WithParamInterface<Wr
 TEST_P(GltfWrongTypeTest, RefusedNamingTheMemberPath) {
     TriangleGltf gltf;
     gltf.extraNodeFields = R"(,"translation":[0,0,0])";
-    gltf.extraTopLevel = R"(,"materials":[{"doubleSided":true}],)"
-                         R"("cameras":[{"type":"perspective","perspective":{"yfov":0.8,"znear":0.1}}],)"
-                         R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional","intensity":1}]}})";
+    gltf.extraTopLevel =
+        R"(,"materials":[{"doubleSided":true}],)"
+        R"("cameras":[{"type":"perspective","perspective":{"yfov":0.8,"znear":0.1}}],)"
+        R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional","intensity":1}]}})";
     std::string text = gltf.json();
     const auto at = text.find(GetParam().from);
     ASSERT_NE(at, std::string::npos) << GetParam().from;
@@ -236,25 +237,28 @@ TEST_P(GltfWrongTypeTest, RefusedNamingTheMemberPath) {
 
 INSTANTIATE_TEST_SUITE_P(
     Members, GltfWrongTypeTest,
-    testing::Values(
-        WrongTypeCase{"objectForArray", R"("primitives":[{"attributes":{"POSITION":0},"indices":1}])",
-                      R"("primitives":{"attributes":{"POSITION":0},"indices":1})",
-                      "meshes[0].primitives: expected an array"},
-        WrongTypeCase{"arrayForObject", R"("attributes":{"POSITION":0})", R"("attributes":[0])",
-                      "meshes[0].primitives[0].attributes: expected an object"},
-        WrongTypeCase{"stringForIndex", R"("mesh":0)", R"("mesh":"0")", "nodes[0].mesh: expected a non-negative integer"},
-        WrongTypeCase{"negativeIndex", R"("scene":0)", R"("scene":-1)", "scene: expected a non-negative integer"},
-        WrongTypeCase{"stringForNumber", R"("translation":[0,0,0])", R"("translation":[0,"1",0])",
-                      "nodes[0].translation[1]: expected a number"},
-        WrongTypeCase{"numberForString", R"("type":"VEC3")", R"("type":3)", "accessors[0].type: expected a string"},
-        WrongTypeCase{"stringForBoolean", R"("doubleSided":true)", R"("doubleSided":"yes")",
-                      "materials[0].doubleSided: expected a boolean"},
-        WrongTypeCase{"numberForObject", R"("perspective":{"yfov":0.8,"znear":0.1})", R"("perspective":4)",
-                      "cameras[0].perspective: expected an object"},
-        WrongTypeCase{"objectForNumber", R"("intensity":1)", R"("intensity":{})",
-                      "extensions.KHR_lights_punctual.lights[0].intensity: expected a number"},
-        WrongTypeCase{"missingRequired", R"("componentType":5126,)", "",
-                      "accessors[0].componentType: required member is missing"}),
+    testing::Values(WrongTypeCase{"objectForArray",
+                                  R"("primitives":[{"attributes":{"POSITION":0},"indices":1}])",
+                                  R"("primitives":{"attributes":{"POSITION":0},"indices":1})",
+                                  "meshes[0].primitives: expected an array"},
+                    WrongTypeCase{"arrayForObject", R"("attributes":{"POSITION":0})", R"("attributes":[0])",
+                                  "meshes[0].primitives[0].attributes: expected an object"},
+                    WrongTypeCase{"stringForIndex", R"("mesh":0)", R"("mesh":"0")",
+                                  "nodes[0].mesh: expected a non-negative integer"},
+                    WrongTypeCase{"negativeIndex", R"("scene":0)", R"("scene":-1)",
+                                  "scene: expected a non-negative integer"},
+                    WrongTypeCase{"stringForNumber", R"("translation":[0,0,0])", R"("translation":[0,"1",0])",
+                                  "nodes[0].translation[1]: expected a number"},
+                    WrongTypeCase{"numberForString", R"("type":"VEC3")", R"("type":3)",
+                                  "accessors[0].type: expected a string"},
+                    WrongTypeCase{"stringForBoolean", R"("doubleSided":true)", R"("doubleSided":"yes")",
+                                  "materials[0].doubleSided: expected a boolean"},
+                    WrongTypeCase{"numberForObject", R"("perspective":{"yfov":0.8,"znear":0.1})",
+                                  R"("perspective":4)", "cameras[0].perspective: expected an object"},
+                    WrongTypeCase{"objectForNumber", R"("intensity":1)", R"("intensity":{})",
+                                  "extensions.KHR_lights_punctual.lights[0].intensity: expected a number"},
+                    WrongTypeCase{"missingRequired", R"("componentType":5126,)", "",
+                                  "accessors[0].componentType: required member is missing"}),
     [](const testing::TestParamInfo<WrongTypeCase>& wrong) { return std::string(wrong.param.name); });
 
 TEST_F(GltfTest, MissingFileIsNamed) {

@@ -1,6 +1,6 @@
-// The real-model corpus (bash tools/corpus.sh): every staged model loads, casts shadows onto visible ground at
-// the defaults, and renders identically in chunks with culling and whole without it. Skipped, saying so, when
-// the corpus has not been built.
+// The real-model corpus (bash tools/corpus.sh): every staged model loads, casts shadows onto visible ground
+// at the defaults, and renders identically in chunks with culling and whole without it. Skipped, saying so,
+// when the corpus has not been built.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>

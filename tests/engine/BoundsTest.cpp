@@ -41,8 +41,9 @@ TEST(BoundsTest, BoxesInsideOrStraddlingAreKept) {
 }
 
 TEST(BoundsTest, BoxesOutsideOnePlaneAreCulled) {
-    EXPECT_FALSE(engine::intersectsClipVolume(box({-1, -1, 1}, {1, 1, 5}), kViewProjection));       // behind
-    EXPECT_FALSE(engine::intersectsClipVolume(box({-1, -1, -300}, {1, 1, -200}), kViewProjection)); // beyond far
+    EXPECT_FALSE(engine::intersectsClipVolume(box({-1, -1, 1}, {1, 1, 5}), kViewProjection)); // behind
+    EXPECT_FALSE(
+        engine::intersectsClipVolume(box({-1, -1, -300}, {1, 1, -200}), kViewProjection)); // beyond far
     EXPECT_FALSE(engine::intersectsClipVolume(box({20, -1, -11}, {30, 1, -9}), kViewProjection));   // right
     EXPECT_FALSE(engine::intersectsClipVolume(box({-1, -30, -11}, {1, -20, -9}), kViewProjection)); // below
     EXPECT_FALSE(engine::intersectsClipVolume(engine::Aabb{}, kViewProjection));

@@ -26,7 +26,7 @@ struct CullingScene {
 
     CullingScene() {
         using namespace engine;
-        add("ground", primitives::plane(20.0f, 48), {}); // 4608 triangles
+        add("ground", primitives::plane(20.0f, 48), {});                     // 4608 triangles
         add("sphere", primitives::sphere(1.0f, 48, 96), {0.0f, 1.2f, 0.0f}); // ~9000 triangles
         add("behind camera", primitives::cube(1.0f), {0.0f, 1.0f, 30.0f});
         // Above the ground left of the view; the sun (from -X, above) throws its shadow into the view.
@@ -53,8 +53,8 @@ struct Rendered {
     engine::FrameStats stats;
 };
 
-Rendered render(const engine::Scene& scene, engine::EntityId camera, std::uint32_t chunkTriangles, bool culling,
-                bool depthPrePass) {
+Rendered render(const engine::Scene& scene, engine::EntityId camera, std::uint32_t chunkTriangles,
+                bool culling, bool depthPrePass) {
     glTestContext();
     engine::Engine engine;
     engine.renderer().chunkLimits.maxTriangles = chunkTriangles;
@@ -74,7 +74,8 @@ Rendered render(const engine::Scene& scene, engine::EntityId camera, std::uint32
 int differingChannels(const engine::Image& a, const engine::Image& b) {
     int count = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        count += std::abs(static_cast<int>(a.pixels[i]) - static_cast<int>(b.pixels[i])) > kMaxChannelDifference;
+        count +=
+            std::abs(static_cast<int>(a.pixels[i]) - static_cast<int>(b.pixels[i])) > kMaxChannelDifference;
     }
     return count;
 }
@@ -85,7 +86,7 @@ TEST(ChunkedRenderingGLTest, ChunkedAndCulledEqualsWholeAndUnculled) {
     const Rendered chunked = render(s.scene, s.camera, 256, true, false);
     EXPECT_EQ(whole.stats.drawCalls, 4u); // one per mesh
     EXPECT_EQ(whole.stats.culledChunks, 0u);
-    EXPECT_GT(chunked.stats.drawCalls, 20u);  // the ground and the sphere span many chunks
+    EXPECT_GT(chunked.stats.drawCalls, 20u);   // the ground and the sphere span many chunks
     EXPECT_GT(chunked.stats.culledChunks, 2u); // at least the two cubes and the ground's far corners
     EXPECT_LT(chunked.stats.triangles, whole.stats.triangles);
     EXPECT_EQ(differingChannels(whole.image, chunked.image), 0);
@@ -108,7 +109,8 @@ TEST(ChunkedRenderingGLTest, CasterOutsideTheViewStillShadowsVisibleGround) {
     int darker = 0;
     int lighter = 0;
     for (std::size_t i = 0; i < withCaster.image.pixels.size(); i += 4) {
-        const int delta = static_cast<int>(without.image.pixels[i + 1]) - static_cast<int>(withCaster.image.pixels[i + 1]);
+        const int delta =
+            static_cast<int>(without.image.pixels[i + 1]) - static_cast<int>(withCaster.image.pixels[i + 1]);
         darker += delta > 20;
         lighter += delta < -kMaxChannelDifference;
     }

@@ -44,7 +44,8 @@ Bounds worldBounds(const engine::Scene& scene) {
 glm::vec3 direction(float elevationDegrees, float azimuthDegrees) {
     const float elevation = glm::radians(elevationDegrees);
     const float azimuth = glm::radians(azimuthDegrees);
-    return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
+    return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+            std::cos(elevation) * std::cos(azimuth)};
 }
 
 void addSun(engine::Scene& scene, const glm::vec3& target, float distance, const StagingOptions& options) {
@@ -100,7 +101,8 @@ content::LoadedScene stageModel(const content::LoadedScene& loaded, const Stagin
     const glm::vec3 extent = bounds.max - bounds.min;
     const float radius = bounds.radius();
 
-    auto ground = std::make_shared<engine::MeshData>(engine::primitives::plane(4.0f * std::max(extent.x, extent.z), 1));
+    auto ground =
+        std::make_shared<engine::MeshData>(engine::primitives::plane(4.0f * std::max(extent.x, extent.z), 1));
     ground->name = "ground";
     ground->material.baseColor = {0.75f, 0.75f, 0.72f};
     scene.entity(scene.create("ground")).mesh = engine::MeshComponent{ground};
@@ -128,8 +130,9 @@ content::LoadedScene stageSurface(engine::MeshData surface, const StagingOptions
         engine::MeshComponent{std::make_shared<engine::MeshData>(std::move(surface))};
     // From above the near edge, across the surface towards its far half.
     const glm::vec3 target(0.0f, bounds.min.y + 0.3f * extent.y, -0.15f * width);
-    const glm::vec3 eye = glm::vec3(0.0f, bounds.max.y, 0.6f * width) +
-                          glm::vec3(0.0f, 0.25f * width * std::tan(glm::radians(options.cameraElevation)), 0.0f);
+    const glm::vec3 eye =
+        glm::vec3(0.0f, bounds.max.y, 0.6f * width) +
+        glm::vec3(0.0f, 0.25f * width * std::tan(glm::radians(options.cameraElevation)), 0.0f);
     addCamera(scene, eye, target, 0.002f * width, 2.5f * width);
     addSun(scene, glm::vec3(bounds.centre()), width, options);
     return staged;

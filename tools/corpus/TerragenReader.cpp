@@ -124,7 +124,8 @@ Heightfield readTerragen(const std::filesystem::path& path) {
     if (!file) {
         throw content::ContentError(path.string(), "cannot open the file");
     }
-    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),
+                                          std::istreambuf_iterator<char>());
     return readTerragen(bytes, path.string());
 }
 
@@ -136,7 +137,9 @@ engine::MeshData heightfieldMesh(const Heightfield& field) {
         y = std::clamp(y, 0, field.rows - 1);
         return field.elevations[static_cast<std::size_t>(y) * field.columns + x];
     };
-    const glm::vec2 origin = -0.5f * field.spacing * glm::vec2(static_cast<float>(field.columns - 1), static_cast<float>(field.rows - 1));
+    const glm::vec2 origin =
+        -0.5f * field.spacing *
+        glm::vec2(static_cast<float>(field.columns - 1), static_cast<float>(field.rows - 1));
     for (int y = 0; y < field.rows; ++y) {
         for (int x = 0; x < field.columns; ++x) {
             mesh.positions.emplace_back(origin.x + static_cast<float>(x) * field.spacing, at(x, y),

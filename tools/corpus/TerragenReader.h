@@ -20,8 +20,8 @@ struct Heightfield {
 };
 
 /// @brief Reads Terragen terrain files (.ter): the "TERRAGENTERRAIN " header, then SIZE, XPTS, YPTS, SCAL,
-/// CRAD, CRVM and ALTW chunks up to "EOF ". Elevation in metres = (BaseHeight + value · HeightScale / 65536) ·
-/// SCAL.z, after the format's published description (Planetside Software, "Terragen Terrain File
+/// CRAD, CRVM and ALTW chunks up to "EOF ". Elevation in metres = (BaseHeight + value · HeightScale / 65536)
+/// · SCAL.z, after the format's published description (Planetside Software, "Terragen Terrain File
 /// Specification"). Throws content::ContentError naming `source` and the chunk on malformed input.
 Heightfield readTerragen(std::span<const std::uint8_t> bytes, const std::string& source);
 Heightfield readTerragen(const std::filesystem::path& path);

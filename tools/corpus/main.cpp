@@ -46,9 +46,10 @@ corpus::StagingOptions parseOptions(const std::vector<std::string>& args, std::s
         const std::string& value = args[++i];
         if (arg == "--up") {
             static const std::vector<std::pair<std::string, glm::vec3>> axes = {
-                {"x", {1, 0, 0}}, {"-x", {-1, 0, 0}}, {"y", {0, 1, 0}},
-                {"-y", {0, -1, 0}}, {"z", {0, 0, 1}}, {"-z", {0, 0, -1}}};
-            const auto axis = std::find_if(axes.begin(), axes.end(), [&](const auto& a) { return a.first == value; });
+                {"x", {1, 0, 0}},   {"-x", {-1, 0, 0}}, {"y", {0, 1, 0}},
+                {"-y", {0, -1, 0}}, {"z", {0, 0, 1}},   {"-z", {0, 0, -1}}};
+            const auto axis =
+                std::find_if(axes.begin(), axes.end(), [&](const auto& a) { return a.first == value; });
             if (axis == axes.end()) {
                 usageError("--up: '" + value + "' is not one of x, -x, y, -y, z, -z");
             }
@@ -59,7 +60,8 @@ corpus::StagingOptions parseOptions(const std::vector<std::string>& args, std::s
             if (colon == std::string::npos || (scheme != "catmull-clark" && scheme != "loop")) {
                 usageError("--subdivide: '" + value + "' is not catmull-clark:LEVEL or loop:LEVEL");
             }
-            options.subdivision = content::SubdivisionTag{scheme, cli::integerIn("--subdivide", value.substr(colon + 1), 0, 4), ""};
+            options.subdivision = content::SubdivisionTag{
+                scheme, cli::integerIn("--subdivide", value.substr(colon + 1), 0, 4), ""};
         } else if (arg == "--sun-elevation") {
             options.sunElevation = cli::numberIn(arg, value, 1.0f, 90.0f);
         } else if (arg == "--sun-azimuth") {
@@ -73,8 +75,8 @@ corpus::StagingOptions parseOptions(const std::vector<std::string>& args, std::s
     return options;
 }
 
-/// Rolling hills of about `triangles` triangles over a 100 m square: a tessellation sweep whose shadows do not
-/// change with the triangle count.
+/// Rolling hills of about `triangles` triangles over a 100 m square: a tessellation sweep whose shadows do
+/// not change with the triangle count.
 engine::MeshData hills(int triangles) {
     corpus::Heightfield field;
     const int cells = std::max(1, static_cast<int>(std::lround(std::sqrt(triangles / 2.0))));
@@ -84,7 +86,8 @@ engine::MeshData hills(int triangles) {
         for (int x = 0; x <= cells; ++x) {
             const float u = glm::two_pi<float>() * static_cast<float>(x) / static_cast<float>(cells);
             const float v = glm::two_pi<float>() * static_cast<float>(y) / static_cast<float>(cells);
-            field.elevations.push_back(6.0f * std::sin(2.0f * u) * std::cos(3.0f * v) + 2.5f * std::sin(7.0f * u + 5.0f * v));
+            field.elevations.push_back(6.0f * std::sin(2.0f * u) * std::cos(3.0f * v) +
+                                       2.5f * std::sin(7.0f * u + 5.0f * v));
         }
     }
     engine::MeshData mesh = corpus::heightfieldMesh(field);
@@ -121,8 +124,9 @@ int main(int argc, char** argv) {
             writeAndReport(corpus::stageModel(model, options, args[1]), args[2]);
         } else if (command == "terrain") {
             const corpus::StagingOptions options = parseOptions(args, 3, true);
-            writeAndReport(corpus::stageSurface(corpus::heightfieldMesh(corpus::readTerragen(args[1])), options),
-                           args[2]);
+            writeAndReport(
+                corpus::stageSurface(corpus::heightfieldMesh(corpus::readTerragen(args[1])), options),
+                args[2]);
         } else if (command == "tessellation") {
             const int triangles = cli::integerIn("TRIANGLES", args[1], 2, 20'000'000);
             const corpus::StagingOptions options = parseOptions(args, 3, false);

@@ -1,6 +1,6 @@
 // gs-scenetest: a shadow-quality check of one scene for a user's own CI. Renders headless, measures the
-// technique's visibility against the ray-traced truth (and optionally the shaded frame against a golden image),
-// writes a short report and the error images, and exits 1 naming every bound that is exceeded.
+// technique's visibility against the ray-traced truth (and optionally the shaded frame against a golden
+// image), writes a short report and the error images, and exits 1 naming every bound that is exceeded.
 #include <cli/OptionValues.h>
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
@@ -109,7 +109,8 @@ Options parse(int argc, char** argv) {
     if (options.technique) {
         const auto technique = shadows::techniqueFromString(*options.technique);
         if (!technique) {
-            usageError("--technique: unknown technique '" + *options.technique + "' (gs-render --list-techniques)");
+            usageError("--technique: unknown technique '" + *options.technique +
+                       "' (gs-render --list-techniques)");
         }
         options.settings.technique = *technique;
     }
@@ -117,7 +118,8 @@ Options parse(int argc, char** argv) {
 }
 
 /// The shaded frame of `path` with `settings`, as gs-render draws it.
-engine::Image shadedFrame(const std::filesystem::path& path, const shadows::ShadowSettings& settings, glm::ivec2 size) {
+engine::Image shadedFrame(const std::filesystem::path& path, const shadows::ShadowSettings& settings,
+                          glm::ivec2 size) {
     const content::LoadedScene loaded = content::GltfLoader::load(path);
     engine::Engine engine;
     engine.addModule(std::make_unique<shadows::ShadowModule>(settings));
@@ -166,17 +168,20 @@ int main(int argc, char** argv) {
         const shadowbench::ShadowBench bench(context, benchOptions);
         const auto scene = bench.prepare(path.stem().string(), path);
         const shadowbench::Accuracy accuracy = bench.measure(*scene, options.settings);
-        engine::writePng(options.out / "classes.png",
-                         shadowbench::classificationImage(options.size, accuracy.classes, accuracy.visibility));
-        engine::writePng(options.out / "error.png", shadowbench::errorHeatMap(options.size, accuracy.classes,
-                                                                               accuracy.truth, accuracy.visibility));
+        engine::writePng(
+            options.out / "classes.png",
+            shadowbench::classificationImage(options.size, accuracy.classes, accuracy.visibility));
+        engine::writePng(
+            options.out / "error.png",
+            shadowbench::errorHeatMap(options.size, accuracy.classes, accuracy.truth, accuracy.visibility));
         const engine::Image shaded = shadedFrame(path, options.settings, options.size);
         engine::writePng(options.out / "shaded.png", shaded);
 
         std::ostringstream report;
         std::vector<std::string> violated;
-        report << "gs-scenetest: " << path.string() << ", technique " << shadows::toString(options.settings.technique)
-               << ", " << options.size.x << "x" << options.size.y << ", " << context.renderer() << "\n";
+        report << "gs-scenetest: " << path.string() << ", technique "
+               << shadows::toString(options.settings.technique) << ", " << options.size.x << "x"
+               << options.size.y << ", " << context.renderer() << "\n";
         const shadowbench::ShadowMetrics& m = accuracy.metrics;
         const auto bound = [&](const std::string& name, double fraction, double maxPercent) {
             const bool ok = 100.0 * fraction <= maxPercent;
@@ -192,9 +197,10 @@ int main(int argc, char** argv) {
         if (options.golden) {
             const engine::Image golden = readPng(*options.golden);
             if (golden.size != shaded.size) {
-                throw engine::Error(options.golden->string() + ": golden image is " + std::to_string(golden.size.x) +
-                                    "x" + std::to_string(golden.size.y) + ", the frame " +
-                                    std::to_string(shaded.size.x) + "x" + std::to_string(shaded.size.y));
+                throw engine::Error(options.golden->string() + ": golden image is " +
+                                    std::to_string(golden.size.x) + "x" + std::to_string(golden.size.y) +
+                                    ", the frame " + std::to_string(shaded.size.x) + "x" +
+                                    std::to_string(shaded.size.y));
             }
             engine::Image diff = shaded;
             std::size_t failing = 0;
@@ -206,7 +212,8 @@ int main(int argc, char** argv) {
                 const bool fails = largest > options.maxDiff;
                 failing += fails;
                 diff.pixels[i] = fails ? 255 : 0;
-                diff.pixels[i + 1] = diff.pixels[i + 2] = static_cast<std::uint8_t>(std::min(255, 4 * largest));
+                diff.pixels[i + 1] = diff.pixels[i + 2] =
+                    static_cast<std::uint8_t>(std::min(255, 4 * largest));
                 diff.pixels[i + 3] = 255;
             }
             engine::writePng(options.out / "diff.png", diff);
@@ -214,9 +221,11 @@ int main(int argc, char** argv) {
                 static_cast<double>(failing) / static_cast<double>(shaded.pixels.size() / 4);
             const bool ok = fraction <= options.maxFailingFraction;
             report << "  golden " << percent(fraction) << " of pixels differ by more than " << options.maxDiff
-                   << " (bound " << percent(options.maxFailingFraction) << ") " << (ok ? "ok" : "EXCEEDED") << "\n";
+                   << " (bound " << percent(options.maxFailingFraction) << ") " << (ok ? "ok" : "EXCEEDED")
+                   << "\n";
             if (!ok) {
-                violated.push_back("golden " + percent(fraction) + " of pixels > " + percent(options.maxFailingFraction));
+                violated.push_back("golden " + percent(fraction) + " of pixels > " +
+                                   percent(options.maxFailingFraction));
             }
         }
         if (violated.empty()) {

@@ -1,9 +1,9 @@
 #include "content/GltfLoader.h"
 
+#include "GltfMemberTypes.h"
 #include "content/CageLoader.h"
 #include "content/ContentError.h"
 #include "content/SubdivisionSurface.h"
-#include "GltfMemberTypes.h"
 
 #include <tiny_gltf.h>
 
@@ -239,8 +239,8 @@ private:
             bytes = bytes.first(length);
         }
         checkJsonNesting(json, source_);
-        // Members of the wrong JSON type would be dropped silently by tinygltf; refuse them by name. Text that
-        // is not JSON at all is left to tinygltf's parser and its message.
+        // Members of the wrong JSON type would be dropped silently by tinygltf; refuse them by name. Text
+        // that is not JSON at all is left to tinygltf's parser and its message.
         const nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
         if (!document.is_discarded()) {
             checkGltfMemberTypes(document, source_);

@@ -59,8 +59,8 @@ public:
     }
 
     /// The member `name` of `object` when present, after checking its type; nullptr when absent.
-    const nlohmann::json* member(const nlohmann::json& object, const char* name, Kind kind, const std::string& path,
-                                 bool required = false) const {
+    const nlohmann::json* member(const nlohmann::json& object, const char* name, Kind kind,
+                                 const std::string& path, bool required = false) const {
         const auto found = object.find(name);
         if (found == object.end()) {
             if (required) {
@@ -73,7 +73,8 @@ public:
     }
 
     /// An optional array member whose every item has `itemKind`.
-    void arrayOf(const nlohmann::json& object, const char* name, Kind itemKind, const std::string& path) const {
+    void arrayOf(const nlohmann::json& object, const char* name, Kind itemKind,
+                 const std::string& path) const {
         if (const nlohmann::json* array = member(object, name, Kind::Array, path)) {
             for (std::size_t i = 0; i < array->size(); ++i) {
                 expect((*array)[i], itemKind, join(path, name) + "[" + std::to_string(i) + "]");
@@ -94,19 +95,23 @@ public:
         }
     }
 
-    void numbers(const nlohmann::json& object, std::initializer_list<const char*> names, const std::string& path) const {
+    void numbers(const nlohmann::json& object, std::initializer_list<const char*> names,
+                 const std::string& path) const {
         for (const char* name : names) {
             member(object, name, Kind::Number, path);
         }
     }
 
-    void indices(const nlohmann::json& object, std::initializer_list<const char*> names, const std::string& path) const {
+    void indices(const nlohmann::json& object, std::initializer_list<const char*> names,
+                 const std::string& path) const {
         for (const char* name : names) {
             member(object, name, Kind::Index, path);
         }
     }
 
-    static std::string join(const std::string& path, const char* name) { return path.empty() ? name : path + "." + name; }
+    static std::string join(const std::string& path, const char* name) {
+        return path.empty() ? name : path + "." + name;
+    }
 
 private:
     const std::string& source_;
@@ -120,7 +125,8 @@ void checkNode(const Checker& c, const nlohmann::json& node, const std::string& 
     }
     if (const nlohmann::json* extensions = c.member(node, "extensions", Kind::Object, path)) {
         const std::string extensionsPath = Checker::join(path, "extensions");
-        if (const nlohmann::json* lights = c.member(*extensions, "KHR_lights_punctual", Kind::Object, extensionsPath)) {
+        if (const nlohmann::json* lights =
+                c.member(*extensions, "KHR_lights_punctual", Kind::Object, extensionsPath)) {
             c.member(*lights, "light", Kind::Index, Checker::join(extensionsPath, "KHR_lights_punctual"));
         }
     }
@@ -142,7 +148,8 @@ void checkMesh(const Checker& c, const nlohmann::json& mesh, const std::string& 
             if (const nlohmann::json* attributes =
                     c.member(primitive, "attributes", Kind::Object, primitivePath, true)) {
                 for (const auto& [semantic, accessor] : attributes->items()) {
-                    c.expect(accessor, Kind::Index, Checker::join(primitivePath, "attributes") + "." + semantic);
+                    c.expect(accessor, Kind::Index,
+                             Checker::join(primitivePath, "attributes") + "." + semantic);
                 }
             }
             c.indices(primitive, {"indices", "mode", "material"}, primitivePath);
@@ -151,7 +158,8 @@ void checkMesh(const Checker& c, const nlohmann::json& mesh, const std::string& 
 }
 
 /// A texture reference (textureInfo): textures are not drawn, but a broken reference is still a broken file.
-void checkTextureInfo(const Checker& c, const nlohmann::json& owner, const char* name, const std::string& path) {
+void checkTextureInfo(const Checker& c, const nlohmann::json& owner, const char* name,
+                      const std::string& path) {
     if (const nlohmann::json* info = c.member(owner, name, Kind::Object, path)) {
         const std::string infoPath = Checker::join(path, name);
         c.member(*info, "index", Kind::Index, infoPath, true);
@@ -211,8 +219,10 @@ void checkGltfMemberTypes(const nlohmann::json& document, const std::string& sou
     c.objects(document, "scenes", "", [&](const nlohmann::json& scene, const std::string& path) {
         c.arrayOf(scene, "nodes", Kind::Index, path);
     });
-    c.objects(document, "nodes", "", [&](const nlohmann::json& node, const std::string& path) { checkNode(c, node, path); });
-    c.objects(document, "meshes", "", [&](const nlohmann::json& mesh, const std::string& path) { checkMesh(c, mesh, path); });
+    c.objects(document, "nodes", "",
+              [&](const nlohmann::json& node, const std::string& path) { checkNode(c, node, path); });
+    c.objects(document, "meshes", "",
+              [&](const nlohmann::json& mesh, const std::string& path) { checkMesh(c, mesh, path); });
     c.objects(document, "accessors", "", [&](const nlohmann::json& accessor, const std::string& path) {
         c.indices(accessor, {"bufferView", "byteOffset"}, path);
         c.member(accessor, "componentType", Kind::Index, path, true);
@@ -234,17 +244,18 @@ void checkGltfMemberTypes(const nlohmann::json& document, const std::string& sou
     c.objects(document, "materials", "", [&](const nlohmann::json& material, const std::string& path) {
         checkMaterial(c, material, path);
     });
-    c.objects(document, "cameras", "", [&](const nlohmann::json& camera, const std::string& path) {
-        checkCamera(c, camera, path);
-    });
+    c.objects(document, "cameras", "",
+              [&](const nlohmann::json& camera, const std::string& path) { checkCamera(c, camera, path); });
     if (const nlohmann::json* extensions = c.member(document, "extensions", Kind::Object, "")) {
-        if (const nlohmann::json* lights = c.member(*extensions, "KHR_lights_punctual", Kind::Object, "extensions")) {
-            c.objects(*lights, "lights", "extensions.KHR_lights_punctual",
-                      [&](const nlohmann::json& light, const std::string& path) { checkLight(c, light, path); });
+        if (const nlohmann::json* lights =
+                c.member(*extensions, "KHR_lights_punctual", Kind::Object, "extensions")) {
+            c.objects(
+                *lights, "lights", "extensions.KHR_lights_punctual",
+                [&](const nlohmann::json& light, const std::string& path) { checkLight(c, light, path); });
         }
     }
-    for (const char* array : {"scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers", "materials", "cameras",
-                              "textures", "images", "samplers"}) {
+    for (const char* array : {"scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers", "materials",
+                              "cameras", "textures", "images", "samplers"}) {
         c.objects(document, array, "", [&](const nlohmann::json& item, const std::string& path) {
             c.member(item, "name", Kind::String, path);
         });

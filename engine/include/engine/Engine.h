@@ -58,8 +58,9 @@ private:
     GLuint reserveTextureUnit() override;
     void drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
                     const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) override;
-    void forEachMeshBounds(const Scene& scene,
-                           const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) override;
+    void
+    forEachMeshBounds(const Scene& scene,
+                      const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) override;
 
     Module& attach(std::unique_ptr<Attached> entry);
     void rebuildChunks();

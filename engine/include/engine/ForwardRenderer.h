@@ -60,8 +60,8 @@ public:
     FrameContext beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
                             std::uint64_t frameIndex);
 
-    /// @brief Draws the chunks of every mesh of `scene` that intersect the clip volume of `cullViewProjection`
-    /// with the currently bound program (see ModuleHost::drawMeshes).
+    /// @brief Draws the chunks of every mesh of `scene` that intersect the clip volume of
+    /// `cullViewProjection` with the currently bound program (see ModuleHost::drawMeshes).
     /// @return Chunks drawn and culled, triangles drawn.
     FrameStats drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
                           const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw);
@@ -80,15 +80,18 @@ public:
     /// @brief Meshes held: those drawn or bounded so far that a scene still references.
     [[nodiscard]] std::size_t cachedMeshCount() const { return meshes_.size(); }
     /// @brief Frees the GPU copy and bounds of every mesh no one but this cache references any more (its
-    /// scenes were dropped). beginFrame calls it, so long sessions that switch scenes do not accumulate meshes.
+    /// scenes were dropped). beginFrame calls it, so long sessions that switch scenes do not accumulate
+    /// meshes.
     void releaseUnreferencedMeshes();
 
     LightingEnvironment environment;
     /// Output of the lighting pass. Default Shaded.
     OutputMode output = OutputMode::Shaded;
-    /// Size of the chunks meshes are split into; applies to meshes uploaded afterwards. Default ChunkLimits{}.
+    /// Size of the chunks meshes are split into; applies to meshes uploaded afterwards. Default
+    /// ChunkLimits{}.
     ChunkLimits chunkLimits;
-    /// Leave out chunks outside each pass's view volume (exact: a culled chunk has no fragment). Default true.
+    /// Leave out chunks outside each pass's view volume (exact: a culled chunk has no fragment). Default
+    /// true.
     bool culling = true;
     /// Lay down depth first, then shade with an EQUAL depth test, so expensive lighting (shadow filtering)
     /// runs once per visible pixel. Pays when overdraw is high and lighting costs more than a second
@@ -109,7 +112,8 @@ private:
     };
     CachedMesh& cached(const std::shared_ptr<const MeshData>& mesh);
     const GpuMesh& upload(CachedMesh& entry);
-    void drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly, FrameStats& stats);
+    void drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly,
+                 FrameStats& stats);
 
     ProgramCache& programs_;
     ShaderVariantKey flatNormalsFlag_;

@@ -10,10 +10,10 @@ namespace engine {
 struct ContextOptions {
     /// Request a KHR_debug context so GL errors surface as GlError/log lines. Default true.
     bool debug = true;
-    /// On a CPU rasteriser, raise glibc's mmap and trim thresholds once at start-up (mallopt), so the driver's
-    /// large per-draw and per-frame buffers are reused instead of being mapped and unmapped every frame (a
-    /// third of a frame in page faults on a 121k-triangle model, docs/RESULTS.md). Process-wide; not applied
-    /// on GPUs. Default true.
+    /// On a CPU rasteriser, raise glibc's mmap and trim thresholds once at start-up (mallopt), so the
+    /// driver's large per-draw and per-frame buffers are reused instead of being mapped and unmapped every
+    /// frame (a third of a frame in page faults on a 121k-triangle model, docs/RESULTS.md). Process-wide; not
+    /// applied on GPUs. Default true.
     bool tuneAllocatorForSoftwareRenderer = true;
 };
 

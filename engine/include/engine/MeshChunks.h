@@ -9,7 +9,8 @@
 namespace engine {
 
 /// @brief Largest chunk a mesh is drawn in. Bounded draws keep software rasterisers' per-draw vertex buffers
-/// small (llvmpipe's would otherwise be allocated and unmapped every frame) and let chunks be culled one by one.
+/// small (llvmpipe's would otherwise be allocated and unmapped every frame) and let chunks be culled one by
+/// one.
 struct ChunkLimits {
     /// Triangles per chunk, >= 1. Default 4096.
     std::uint32_t maxTriangles = 4096;
@@ -38,9 +39,9 @@ struct ChunkedMesh {
 };
 
 /// @brief Splits `mesh` into chunks of at most `limits.maxTriangles` triangles by recursive median splits of
-/// the triangle centroids along the longest axis, so that each chunk's bounds are tight for culling. Triangles
-/// keep their original order inside a chunk; a mesh that fits one chunk keeps its triangle order entirely.
-/// Indices out of range are the caller's to reject (the loaders do).
+/// the triangle centroids along the longest axis, so that each chunk's bounds are tight for culling.
+/// Triangles keep their original order inside a chunk; a mesh that fits one chunk keeps its triangle order
+/// entirely. Indices out of range are the caller's to reject (the loaders do).
 [[nodiscard]] ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits = {});
 
 } // namespace engine

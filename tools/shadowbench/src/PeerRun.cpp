@@ -38,20 +38,25 @@ PassTiming timing(const nlohmann::json& document, const char* field, const std::
 /// Single-channel little-endian PFM, rows bottom to top in the file, returned top to bottom.
 std::vector<float> readPfm(const std::filesystem::path& path, glm::ivec2 size) {
     const std::vector<char> bytes = readBytes(path);
-    std::istringstream header(std::string(bytes.begin(), bytes.begin() + std::min<std::ptrdiff_t>(64, static_cast<std::ptrdiff_t>(bytes.size()))));
+    std::istringstream header(
+        std::string(bytes.begin(),
+                    bytes.begin() + std::min<std::ptrdiff_t>(64, static_cast<std::ptrdiff_t>(bytes.size()))));
     std::string magic;
     int width = 0;
     int height = 0;
     float scale = 0.0f;
     header >> magic >> width >> height >> scale;
     if (!header || magic != "Pf" || scale >= 0.0f) {
-        throw engine::Error(path.string() + ": not a little-endian single-channel PFM ('Pf', negative scale)");
+        throw engine::Error(path.string() +
+                            ": not a little-endian single-channel PFM ('Pf', negative scale)");
     }
     if (width != size.x || height != size.y) {
-        throw engine::Error(path.string() + ": image is " + std::to_string(width) + "x" + std::to_string(height) +
-                            ", the benchmark renders " + std::to_string(size.x) + "x" + std::to_string(size.y));
+        throw engine::Error(path.string() + ": image is " + std::to_string(width) + "x" +
+                            std::to_string(height) + ", the benchmark renders " + std::to_string(size.x) +
+                            "x" + std::to_string(size.y));
     }
-    const auto dataStart = static_cast<std::size_t>(header.tellg()) + 1; // one whitespace byte ends the header
+    const auto dataStart =
+        static_cast<std::size_t>(header.tellg()) + 1; // one whitespace byte ends the header
     const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     if (bytes.size() < dataStart + 4 * count) {
         throw engine::Error(path.string() + ": pixel data is truncated");
@@ -60,7 +65,8 @@ std::vector<float> readPfm(const std::filesystem::path& path, glm::ivec2 size) {
     for (int y = 0; y < height; ++y) {
         const std::size_t fileRow = static_cast<std::size_t>(height - 1 - y);
         std::memcpy(values.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width),
-                    bytes.data() + dataStart + 4 * fileRow * static_cast<std::size_t>(width), 4 * static_cast<std::size_t>(width));
+                    bytes.data() + dataStart + 4 * fileRow * static_cast<std::size_t>(width),
+                    4 * static_cast<std::size_t>(width));
     }
     return values;
 }

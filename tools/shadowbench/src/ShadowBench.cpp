@@ -46,7 +46,8 @@ PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine
         const auto start = std::chrono::steady_clock::now();
         engine.renderFrame(scene, camera, target);
         glFinish();
-        times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        times.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     return summarise(times);
 }
@@ -218,7 +219,8 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
                                         int bandPixels) const {
     if (visibility.size() != scene.truth_.size()) {
         throw engine::Error("shadowbench: a visibility image of " + std::to_string(visibility.size()) +
-                            " pixels for scene '" + scene.name() + "' of " + std::to_string(scene.truth_.size()));
+                            " pixels for scene '" + scene.name() + "' of " +
+                            std::to_string(scene.truth_.size()));
     }
     Accuracy accuracy;
     accuracy.truth = scene.truth_;
@@ -325,8 +327,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
 }
 
 std::string resultsJson(const std::vector<BenchResult>& results, const std::vector<SceneCost>& costs,
-                        const std::string& renderer, const std::string& glVersion, engine::TimingMethod method,
-                        const BenchOptions& options) {
+                        const std::string& renderer, const std::string& glVersion,
+                        engine::TimingMethod method, const BenchOptions& options) {
     nlohmann::json document;
     document["renderer"] = renderer;
     document["glVersion"] = glVersion;
@@ -372,21 +374,21 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["results"] = list;
     nlohmann::json sceneCosts = nlohmann::json::array();
     for (const SceneCost& c : costs) {
-        sceneCosts.push_back({{"scene", c.scene},
-                              {"triangles", c.triangles},
-                              {"drawCalls", c.drawCalls},
-                              {"culledChunks", c.culledChunks},
-                              {"meshBytes", c.meshBytes},
-                              {"unshadowedFrameMs",
-                               {{"median", c.unshadowedFrame.median},
-                                {"min", c.unshadowedFrame.min},
-                                {"max", c.unshadowedFrame.max}}},
-                              {"peerUnshadowedFrameMs",
-                               c.peerUnshadowedFrame.median < 0.0
-                                   ? nlohmann::json()
-                                   : nlohmann::json({{"median", c.peerUnshadowedFrame.median},
-                                                     {"min", c.peerUnshadowedFrame.min},
-                                                     {"max", c.peerUnshadowedFrame.max}})}});
+        sceneCosts.push_back(
+            {{"scene", c.scene},
+             {"triangles", c.triangles},
+             {"drawCalls", c.drawCalls},
+             {"culledChunks", c.culledChunks},
+             {"meshBytes", c.meshBytes},
+             {"unshadowedFrameMs",
+              {{"median", c.unshadowedFrame.median},
+               {"min", c.unshadowedFrame.min},
+               {"max", c.unshadowedFrame.max}}},
+             {"peerUnshadowedFrameMs", c.peerUnshadowedFrame.median < 0.0
+                                           ? nlohmann::json()
+                                           : nlohmann::json({{"median", c.peerUnshadowedFrame.median},
+                                                             {"min", c.peerUnshadowedFrame.min},
+                                                             {"max", c.peerUnshadowedFrame.max}})}});
     }
     document["scenes"] = sceneCosts;
     return document.dump(2) + "\n";

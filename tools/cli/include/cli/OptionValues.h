@@ -91,8 +91,8 @@ inline std::filesystem::path corpusFolder(const std::filesystem::path& contentFo
     return content.parent_path() / "corpus";
 }
 
-/// @brief The glTF a --scene value means: the file itself, the content scene <contentFolder>/scenes/<name>.gltf,
-/// or else the corpus scene <corpusFolder>/<name>.glb when that exists.
+/// @brief The glTF a --scene value means: the file itself, the content scene
+/// <contentFolder>/scenes/<name>.gltf, or else the corpus scene <corpusFolder>/<name>.glb when that exists.
 inline std::filesystem::path scenePath(const std::string& scene, const std::filesystem::path& contentFolder) {
     if (namesSceneFile(scene)) {
         return scene;
@@ -100,7 +100,7 @@ inline std::filesystem::path scenePath(const std::string& scene, const std::file
     const std::filesystem::path contentScene = contentFolder / "scenes" / (scene + ".gltf");
     const std::filesystem::path corpusScene = corpusFolder(contentFolder) / (scene + ".glb");
     return !std::filesystem::exists(contentScene) && std::filesystem::exists(corpusScene) ? corpusScene
-                                                                                           : contentScene;
+                                                                                          : contentScene;
 }
 
 } // namespace cli

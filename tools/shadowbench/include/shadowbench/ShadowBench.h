@@ -64,7 +64,8 @@ struct SceneCost {
     /// GPU bytes of the scene's vertex and index buffers.
     std::size_t meshBytes = 0;
     PassTiming unshadowedFrame;
-    /// The OpenSceneGraph peer's unshadowed frame (from its vdsm run), when it ran; negative medians otherwise.
+    /// The OpenSceneGraph peer's unshadowed frame (from its vdsm run), when it ran; negative medians
+    /// otherwise.
     PassTiming peerUnshadowedFrame{-1.0, -1.0, -1.0};
 };
 
@@ -163,7 +164,7 @@ shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, 
 std::string resultsCsv(const std::vector<BenchResult>& results);
 /// @brief Results as JSON, with the renderer, the timing method and each scene's cost.
 std::string resultsJson(const std::vector<BenchResult>& results, const std::vector<SceneCost>& costs,
-                        const std::string& renderer, const std::string& glVersion, engine::TimingMethod method,
-                        const BenchOptions& options);
+                        const std::string& renderer, const std::string& glVersion,
+                        engine::TimingMethod method, const BenchOptions& options);
 
 } // namespace shadowbench
