@@ -12,7 +12,7 @@ first = json.loads(reports[0].read_text())
 print("# Demo report\n")
 print(f"Renderer: {first['renderer']} ({first['glVersion']}). Timing: {first['timingMethod']}, "
       f"median of {first['frames']} frames after one warm-up frame.\n")
-print("| image | technique | size | triangles | frame ms (median) | programs compiled |")
+print("| image | technique | size | triangles drawn (after culling) | frame ms (median) | programs compiled |")
 print("| --- | --- | --- | --- | --- | --- |")
 for path in reports:
     r = json.loads(path.read_text())
