@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace {
@@ -245,6 +246,8 @@ int main(int argc, char** argv) {
             }
             shadowbench::SceneCost cost = bench.measureCost(*scene);
             if (options.peerFolder) {
+                // Our boundary band at the peer's map size, measured once per size rather than once per run.
+                std::map<int, int> bandPixelsAtMapSize;
                 for (const std::string& technique : shadowbench::peerTechniques()) {
                     const auto run = shadowbench::loadPeerRun(*options.peerFolder, scene->name(), technique,
                                                               options.bench.size);
@@ -253,9 +256,15 @@ int main(int argc, char** argv) {
                                   << options.peerFolder->string() << "\n";
                         continue;
                     }
-                    shadows::ShadowSettings ours;
-                    ours.resolution = run->mapSize;
-                    results.push_back(bench.peerResult(*scene, *run, bench.measure(*scene, ours).bandPixels));
+                    auto band = bandPixelsAtMapSize.find(run->mapSize);
+                    if (band == bandPixelsAtMapSize.end()) {
+                        shadows::ShadowSettings ours;
+                        ours.resolution = run->mapSize;
+                        band =
+                            bandPixelsAtMapSize.emplace(run->mapSize, bench.measure(*scene, ours).bandPixels)
+                                .first;
+                    }
+                    results.push_back(bench.peerResult(*scene, *run, band->second));
                     if (technique == "vdsm") {
                         cost.peerUnshadowedFrame = run->unshadowed;
                     }
