@@ -18,10 +18,10 @@ rm -rf "$work"
     --taps 4 --resolutions 1024 --frames 5 --out "$work/scenes"
 "$bench" --scene knob --techniques pcf,pcf-gsm-naive,pcf-gsm-point,pcf-gsm-average,pcf-gsm-quadratic \
     --taps 5 --radius 2 --resolutions 1024 --frames 15 \
-    --config "rpb-d16-round:technique=receiver-plane,depthFormat=d16,constantBias=0" \
-    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,constantBias=0,floorReceiverDepth=true" \
-    --config "rpb-d24-round:technique=receiver-plane,depthFormat=d24,constantBias=0" \
-    --config "rpb-d24-floor:technique=receiver-plane,depthFormat=d24,constantBias=0,floorReceiverDepth=true" \
+    --config "rpb-d16-round:technique=receiver-plane,depthFormat=d16" \
+    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true" \
+    --config "rpb-d24-round:technique=receiver-plane,depthFormat=d24" \
+    --config "rpb-d24-floor:technique=receiver-plane,depthFormat=d24,floorReceiverDepth=true" \
     --config "average-circular8:technique=pcf-gsm-average,averageGradientForm=circular8,pcfRadius=1" \
     --config "average-circular8-vec4:technique=pcf-gsm-average,averageGradientForm=circular8-vec4,pcfRadius=1" \
     --config "naive-circular8:technique=pcf-gsm-naive,pcfLayout=circular8,pcfRadius=1" \
@@ -31,10 +31,10 @@ rm -rf "$work"
 "$bench" --scene knob --scene thin-shell --scene spheres --techniques vsm,evsm,msm --resolutions 1024 --frames 7 \
     --config "msm-16bit:technique=msm,msmQuantize16=true,resolution=1024" \
     --config "vsm-no-reduction:technique=vsm,lightBleedingReduction=0,resolution=1024" \
-    --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,constantBias=0.12,resolution=1024" \
-    --config "jittered32-early8:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=8,constantBias=0.12,resolution=1024" \
-    --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,constantBias=0.12,resolution=1024" \
-    --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,constantBias=0.12,resolution=1024" \
+    --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,resolution=1024" \
+    --config "jittered32-early8:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=8,resolution=1024" \
+    --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,resolution=1024" \
+    --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,resolution=1024" \
     --out "$work/filtered"
 
 # 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of

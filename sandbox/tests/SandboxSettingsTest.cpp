@@ -23,7 +23,7 @@ SandboxSettings everythingSet() {
     settings.a.technique = shadows::ShadowTechnique::Pcf;
     settings.a.pcfLayout = shadows::TapLayout::Poisson;
     settings.a.pcfTaps = 16;
-    settings.a.constantBias = 0.0123f;
+    settings.a.constantBiasTexels = 0.0123f;
     settings.a.debugView = shadows::ShadowDebugView::Bias;
     settings.b.technique = shadows::ShadowTechnique::ReceiverPlaneBias;
     settings.b.receiverPlaneKernel = shadows::ReceiverPlaneKernel::PerTap;

@@ -63,7 +63,7 @@ TEST_F(SplitRendererGLTest, EachSideIsThatSidesSingleTechniqueFrame) {
     SandboxSettings settings = smallKnob();
     // Hard comparison without bias shows acne everywhere lit; the average-gradient correction none.
     settings.a.technique = shadows::ShadowTechnique::HardCompare;
-    settings.a.constantBias = 0.0f;
+    settings.a.constantBiasTexels = 0.0f;
     settings.split = 0.4f;
     Session session(catalog, settings);
 

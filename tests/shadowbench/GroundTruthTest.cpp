@@ -209,3 +209,92 @@ TEST(ShadowMetricsTest, ConcaveMaskFindsTheInsideOfACylinder) {
     const auto convex = concaveMask(size, positions, normals, covered, 0.5f);
     EXPECT_EQ(convex[static_cast<std::size_t>(size.x + 10)], 0);
 }
+
+namespace {
+/// A disc of shadow (visibility 0) of `radius` pixels centred at `centre` on a lit 64x48 receiver.
+std::vector<float> discShadow(glm::vec2 centre, float radius) {
+    std::vector<float> image(64 * 48, 1.0f);
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            if (glm::length(glm::vec2(x, y) - centre) <= radius) {
+                image[static_cast<std::size_t>(y * 64 + x)] = 0.0f;
+            }
+        }
+    }
+    return image;
+}
+} // namespace
+
+TEST(EdgePlacementTest, EdgePixelsAreTheShadowedSideOfEachBoundary) {
+    const glm::ivec2 size(6, 1);
+    const std::vector<PixelClass> classes(6, PixelClass::Lit);
+    const std::vector<float> visibility{1, 1, 0, 0, 0, 1};
+    EXPECT_EQ(edgePixels(size, classes, visibility), (std::vector<std::uint8_t>{0, 0, 1, 0, 1, 0}));
+    // A neighbour that is not a receiver (background, back faces) makes no edge.
+    std::vector<PixelClass> withBackground = classes;
+    withBackground[1] = PixelClass::Ignored;
+    EXPECT_EQ(edgePixels(size, withBackground, visibility), (std::vector<std::uint8_t>{0, 0, 0, 0, 1, 0}));
+}
+
+class EdgeShiftTest : public testing::TestWithParam<int> {};
+
+TEST_P(EdgeShiftTest, AShadowShiftedByKPixelsIsKPixelsAway) {
+    const int k = GetParam();
+    const glm::ivec2 size(64, 48);
+    const std::vector<PixelClass> classes(64 * 48, PixelClass::Lit);
+    // A half-plane shadow x >= 20, rendered from x >= 20 + k: both edges are straight columns.
+    std::vector<float> truth(64 * 48, 1.0f);
+    std::vector<float> rendered(64 * 48, 1.0f);
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            truth[static_cast<std::size_t>(y * 64 + x)] = x >= 20 ? 0.0f : 1.0f;
+            rendered[static_cast<std::size_t>(y * 64 + x)] = x >= 20 + k ? 0.0f : 1.0f;
+        }
+    }
+    const EdgePlacement edges = edgePlacement(size, classes, truth, rendered);
+    EXPECT_EQ(edges.trueToRendered.count, 48u);
+    EXPECT_EQ(edges.renderedToTrue.count, 48u);
+    EXPECT_DOUBLE_EQ(edges.trueToRendered.mean, k);
+    EXPECT_DOUBLE_EQ(edges.trueToRendered.percentile95, k);
+    EXPECT_DOUBLE_EQ(edges.renderedToTrue.mean, k);
+    EXPECT_DOUBLE_EQ(edges.renderedToTrue.percentile95, k);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shifts, EdgeShiftTest, testing::Values(0, 1, 3, 10));
+
+TEST(EdgePlacementTest, AShrunkenShadowIsFarFromTheTrueEdgeOnlyOneWay) {
+    // Peter-panning-like shrink: the rendered disc (radius 6) lies inside the true one (radius 12). Every
+    // rendered edge is ~6 pixels from the true circle, and so is every true edge from the rendered one.
+    const glm::ivec2 size(64, 48);
+    const std::vector<PixelClass> classes(64 * 48, PixelClass::Lit);
+    const EdgePlacement edges =
+        edgePlacement(size, classes, discShadow({32, 24}, 12.0f), discShadow({32, 24}, 6.0f));
+    EXPECT_NEAR(edges.trueToRendered.mean, 6.0, 0.8);
+    EXPECT_NEAR(edges.renderedToTrue.mean, 6.0, 0.8);
+}
+
+TEST(EdgePlacementTest, SpeckleFarFromAnyTrueEdgeShowsOnlyFromTheRenderedSide) {
+    const glm::ivec2 size(64, 48);
+    const std::vector<PixelClass> classes(64 * 48, PixelClass::Lit);
+    const std::vector<float> truth = discShadow({16, 24}, 5.0f);
+    std::vector<float> rendered = truth;
+    rendered[static_cast<std::size_t>(10 * 64 + 56)] = 0.0f; // one acne pixel at (56, 10)
+    const EdgePlacement edges = edgePlacement(size, classes, truth, rendered);
+    EXPECT_DOUBLE_EQ(edges.trueToRendered.mean, 0.0);
+    // One stray pixel among ~30 edge pixels moves the mean, not the 95th percentile.
+    EXPECT_DOUBLE_EQ(edges.renderedToTrue.percentile95, 0.0);
+    EXPECT_EQ(edges.renderedToTrue.count, edges.trueToRendered.count + 1);
+    // The acne pixel is ~35 pixels from the disc: it alone lifts the mean.
+    EXPECT_GT(edges.renderedToTrue.mean * static_cast<double>(edges.renderedToTrue.count), 30.0);
+}
+
+TEST(EdgePlacementTest, NoRenderedEdgeCountsAsTheImageDiagonal) {
+    const glm::ivec2 size(64, 48);
+    const std::vector<PixelClass> classes(64 * 48, PixelClass::Lit);
+    const std::vector<float> lit(64 * 48, 1.0f);
+    const EdgePlacement edges = edgePlacement(size, classes, discShadow({32, 24}, 8.0f), lit);
+    EXPECT_GT(edges.trueToRendered.count, 0u);
+    EXPECT_DOUBLE_EQ(edges.trueToRendered.mean, 80.0); // hypot(64, 48)
+    EXPECT_EQ(edges.renderedToTrue.count, 0u);
+    EXPECT_DOUBLE_EQ(edges.renderedToTrue.mean, 0.0);
+}

@@ -8,7 +8,7 @@ failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 "$bench" --scene knob --techniques hard,pcf-gsm-average --taps 2,3 --resolutions 256,512 --size 96x72 --frames 1 \
-    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true,constantBias=0" \
+    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true,constantBiasTexels=0" \
     --out "$out" > "$out.log" 2>&1 || fail "sweep exited $?: $(cat "$out.log")"
 # hard: 2 resolutions; pcf-gsm-average: 2 taps x 2 resolutions; plus one --config = 7 rows.
 rows=$(($(wc -l < "$out/results.csv") - 1))

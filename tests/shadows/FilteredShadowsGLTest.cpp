@@ -53,8 +53,6 @@ TEST_P(FilteredShadowsGLTest, RendersKnobAndSpheresWithBoundedVisibility) {
         settings.msmQuantize16 = GetParam().quantize;
         settings.earlyOutTestTaps = GetParam().earlyOut;
         settings.resolution = 512;
-        // Plain PCF compares every tap at the fragment's depth: it needs a large bias (moments need none).
-        settings.constantBias = GetParam().technique == ShadowTechnique::JitteredPcf ? 0.12f : 0.002f;
         settings.debugView = ShadowDebugView::Visibility;
         const std::vector<float> pixels = render(loaded, settings);
         std::size_t shadowed = 0;
@@ -88,7 +86,6 @@ TEST(FilteredShadowsGLTest, EarlyOutMatchesTheFullKernelWhereItRunsAndSkipsMostP
     settings.resolution = 512;
     settings.jitterTaps = 32;
     settings.pcfRadius = 2.0f;
-    settings.constantBias = 0.12f; // plain PCF taps need a real bias (0.03 still leaves acne at 512²)
     settings.earlyOutTestTaps = 0;
     settings.debugView = ShadowDebugView::Visibility;
     const std::vector<float> full = render(loaded, settings);

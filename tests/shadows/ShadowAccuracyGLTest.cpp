@@ -82,7 +82,7 @@ struct AccuracyCase {
     const char* name;
     ShadowTechnique technique;
     DepthFormat format;
-    float constantBias;
+    float constantBiasTexels;
     bool floorReceiverDepth;
     double maxAcne;
     double maxLeak;
@@ -93,24 +93,24 @@ struct AccuracyCase {
 // comparisons with a tiny bias are expected to show acne and naive PCF over GSM to darken (that is what the
 // other techniques fix); their thresholds pin that behaviour down too.
 const AccuracyCase kAccuracy[] = {
-    // name, technique, format, constant bias (world), floor reference, max acne, max leak, max darkening
-    {"hardTinyBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.002f, false, 0.55, 0.005, 0.55},
-    {"hardLargeBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.05f, false, 0.005, 0.005, 0.005},
-    {"slopeScaled", ShadowTechnique::SlopeScaledBias, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.005},
-    {"hardwarePcf", ShadowTechnique::HardwarePcf, DepthFormat::D24, 0.05f, false, 0.005, 0.005, 0.005},
-    {"pcf", ShadowTechnique::Pcf, DepthFormat::D24, 0.05f, false, 0.005, 0.005, 0.25},
-    {"gsm", ShadowTechnique::Gsm, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.005},
-    {"pcfGsmNaive", ShadowTechnique::PcfGsmNaive, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.45},
-    {"pcfGsmPoint", ShadowTechnique::PcfGsmPointGradient, DepthFormat::D24, 0.002f, false, 0.005, 0.005,
+    // name, technique, format, constant bias (texels), floor reference, max acne, max leak, max darkening
+    {"hardNoBias", ShadowTechnique::HardCompare, DepthFormat::D24, 0.0f, false, 0.55, 0.005, 0.55},
+    {"hardLargeBias", ShadowTechnique::HardCompare, DepthFormat::D24, 8.0f, false, 0.005, 0.005, 0.005},
+    {"slopeScaled", ShadowTechnique::SlopeScaledBias, DepthFormat::D24, 0.0f, false, 0.005, 0.005, 0.005},
+    {"hardwarePcf", ShadowTechnique::HardwarePcf, DepthFormat::D24, 0.0f, false, 0.005, 0.005, 0.005},
+    {"pcf", ShadowTechnique::Pcf, DepthFormat::D24, 0.0f, false, 0.005, 0.005, 0.25},
+    {"gsm", ShadowTechnique::Gsm, DepthFormat::D24, 0.0f, false, 0.005, 0.005, 0.005},
+    {"pcfGsmNaive", ShadowTechnique::PcfGsmNaive, DepthFormat::D24, 0.0f, false, 0.005, 0.005, 0.45},
+    {"pcfGsmPoint", ShadowTechnique::PcfGsmPointGradient, DepthFormat::D24, 0.0f, false, 0.005, 0.005,
      0.002},
-    {"pcfGsmAverage", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D24, 0.002f, false, 0.005, 0.005,
+    {"pcfGsmAverage", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D24, 0.0f, false, 0.005, 0.005,
      0.002},
-    {"pcfGsmQuadratic", ShadowTechnique::PcfGsmQuadratic, DepthFormat::D24, 0.002f, false, 0.003, 0.005,
+    {"pcfGsmQuadratic", ShadowTechnique::PcfGsmQuadratic, DepthFormat::D24, 0.0f, false, 0.003, 0.005,
      0.003},
-    {"receiverPlane", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.002f, false, 0.005, 0.005,
+    {"receiverPlane", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, false, 0.005, 0.005,
      0.005},
-    {"normalOffset", ShadowTechnique::NormalOffset, DepthFormat::D24, 0.002f, false, 0.005, 0.005, 0.005},
-    {"pcfGsmAverageD16", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D16, 0.002f, false, 0.005,
+    {"normalOffset", ShadowTechnique::NormalOffset, DepthFormat::D24, 0.0f, false, 0.005, 0.005, 0.005},
+    {"pcfGsmAverageD16", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D16, 0.0f, false, 0.005,
      0.005, 0.002},
     // Without any bias: a plain comparison self-shadows about half of every lit surface...
     {"hardD16NoBias", ShadowTechnique::HardCompare, DepthFormat::D16, 0.0f, false, 0.55, 0.005, 0.55},
@@ -129,7 +129,7 @@ const AccuracyCase kAccuracy[] = {
      0.002},
     {"receiverPlaneD24Floor", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, true, 0.025, 0.005,
      0.04},
-    {"pcfGsmAverageD32F", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D32F, 0.002f, false, 0.005,
+    {"pcfGsmAverageD32F", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D32F, 0.0f, false, 0.005,
      0.005, 0.002},
 };
 
@@ -144,7 +144,7 @@ TEST_P(ShadowAccuracyGLTest, AcneAndLeakStayUnderMeasuredThresholds) {
     ShadowSettings settings;
     settings.technique = c.technique;
     settings.depthFormat = c.format;
-    settings.constantBias = c.constantBias;
+    settings.constantBiasTexels = c.constantBiasTexels;
     settings.floorReceiverDepth = c.floorReceiverDepth;
     settings.resolution = 1024;
     const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});

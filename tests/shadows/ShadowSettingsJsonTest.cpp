@@ -14,7 +14,8 @@ TEST(ShadowSettingsJsonTest, RoundTripsEveryField) {
     settings.resolution = 512;
     settings.depthFormat = DepthFormat::D16;
     settings.casterFaces = CasterFaces::Back;
-    settings.constantBias = 0.125f;
+    settings.constantBiasTexels = 0.125f;
+    settings.depthBiasSteps = 3.5f;
     settings.slopeScale = 2.5f;
     settings.slopeUnits = 3.0f;
     settings.pcfLayout = TapLayout::Poisson;
@@ -71,7 +72,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadJsonCase{"hugeNumber", R"({"pcfRadius": 1e300})", "field 'pcfRadius'"},
         BadJsonCase{"outOfRange", R"({"resolution": 32})", "resolution 32 is outside [64, 16384]"},
         BadJsonCase{"badBool", R"({"pcfRotate": 1})", "field 'pcfRotate'"},
-        BadJsonCase{"negativeBias", R"({"constantBias": -1})", "constantBias"}),
+        BadJsonCase{"negativeBias", R"({"constantBiasTexels": -1})", "constantBiasTexels"},
+        BadJsonCase{"hugeDepthBias", R"({"depthBiasSteps": 1e9})", "depthBiasSteps"},
+        BadJsonCase{"negativeNormalOffset", R"({"normalOffsetTexels": -0.5})", "normalOffsetTexels"}),
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(ShadowSettingsJsonTest, FilesRoundTripAndMissingFilesAreNamed) {

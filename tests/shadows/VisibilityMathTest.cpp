@@ -2,6 +2,8 @@
 #include <shadows/TapPattern.h>
 #include <shadows/VisibilityMath.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -347,5 +349,103 @@ TEST(FilteredShadowMathTest, QuantisedMomentsRoundTripWithinTheSixteenBitBound) 
         for (int c = 0; c < 4; ++c) {
             EXPECT_NEAR(back[c], exact[c], bound) << "z " << z << " moment " << c;
         }
+    }
+}
+
+// ---- Automatic bias: normal offset and the adaptive depth bias's tangent plane ----
+
+TEST(AutomaticBiasMathTest, NormalOffsetIsZeroFacingTheLightAndTheReachEdgeOn) {
+    EXPECT_FLOAT_EQ(g::gsNormalOffset(3.0f, 1.0f), 0.0f);
+    EXPECT_FLOAT_EQ(g::gsNormalOffset(3.0f, -1.0f), 0.0f);
+    EXPECT_FLOAT_EQ(g::gsNormalOffset(3.0f, 0.0f), 3.0f);
+    EXPECT_NEAR(g::gsNormalOffset(2.0f, std::cos(0.5f)), 2.0f * std::sin(0.5f), 1e-6f);
+    // Rounding may push |cos| past 1: still finite, still zero.
+    EXPECT_FLOAT_EQ(g::gsNormalOffset(2.0f, 1.0000001f), 0.0f);
+}
+
+TEST(AutomaticBiasMathTest, NormalOffsetClearsAPlaneOverTheReachAtEveryAngle) {
+    // 2D: a plane through the origin at angle theta to an orthographic light shining along -y. A receiver at
+    // the origin is offset by h along the normal; a lookup `reach` away (across the light) must find the
+    // plane no nearer to the light than the offset receiver.
+    const float reach = 2.5f;
+    for (float theta = 0.0f; theta < 1.5707f; theta += 0.01f) {
+        const glm::vec2 normal(-std::sin(theta), std::cos(theta));
+        const float h = g::gsNormalOffset(reach, normal.y);
+        const glm::vec2 receiver = h * normal;
+        for (const float side : {-1.0f, 1.0f}) {
+            const float x = receiver.x + side * reach;
+            const float planeHeight = x * std::tan(theta); // the plane's height (towards the light) there
+            EXPECT_GE(receiver.y + 1e-4f, planeHeight) << "theta " << theta;
+        }
+    }
+}
+
+namespace {
+/// Orthographic light looking down -z onto the unit square of texture space, depth 0 at z = 1, 1 at z = -1.
+glm::mat4 orthographicMap() {
+    glm::mat4 m(1.0f);
+    m[0][0] = 0.5f;
+    m[1][1] = 0.5f;
+    m[2][2] = -0.5f;
+    m[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    return m;
+}
+} // namespace
+
+TEST(AdaptiveBiasMathTest, PlaneFacingAnOrthographicLightHasZeroGradient) {
+    const glm::vec2 gradient =
+        g::gsTangentPlaneGradient(orthographicMap(), {0.1f, -0.2f, 0.3f}, {0.0f, 0.0f, 1.0f}, 1024.0f);
+    EXPECT_EQ(gradient, glm::vec2(0.0f));
+}
+
+TEST(AdaptiveBiasMathTest, TiltedPlaneGradientIsItsSlopePerTexel) {
+    // Tilted by theta about y: z falls by tan(theta) per world unit in x; texture x spans 2 world units in
+    // 1024 texels, depth spans 2 world units in 1.
+    const float theta = 0.7f;
+    const glm::vec3 normal(std::sin(theta), 0.0f, std::cos(theta));
+    const glm::vec2 gradient =
+        g::gsTangentPlaneGradient(orthographicMap(), {0.0f, 0.0f, 0.0f}, normal, 1024.0f);
+    EXPECT_NEAR(gradient.x, std::tan(theta) * (2.0f / 1024.0f) * 0.5f, 1e-7f);
+    EXPECT_NEAR(gradient.y, 0.0f, 1e-9f);
+}
+
+TEST(AdaptiveBiasMathTest, EdgeOnAndDegenerateNormalsGiveZeroNotInfinity) {
+    EXPECT_EQ(g::gsTangentPlaneGradient(orthographicMap(), {}, {1.0f, 0.0f, 0.0f}, 1024.0f), glm::vec2(0.0f));
+    EXPECT_EQ(g::gsTangentPlaneGradient(orthographicMap(), {}, {0.0f, 0.0f, 0.0f}, 1024.0f), glm::vec2(0.0f));
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(g::gsTangentPlaneGradient(orthographicMap(), {}, {nan, 0.0f, 1.0f}, 1024.0f), glm::vec2(0.0f));
+}
+
+TEST(AdaptiveBiasMathTest, GrazingPlaneGradientIsLargeButFinite) {
+    const float theta = 1.5707f; // 0.005° from edge-on
+    const glm::vec2 gradient =
+        g::gsTangentPlaneGradient(orthographicMap(), {}, {std::sin(theta), 0.0f, std::cos(theta)}, 1024.0f);
+    EXPECT_TRUE(std::isfinite(gradient.x));
+    EXPECT_GT(gradient.x, 1.0f); // more than the whole depth range per texel
+}
+
+TEST(AdaptiveBiasMathTest, PerspectiveMapPredictsThePlaneDepthExactlyAcrossTexels) {
+    // A spot light at the origin looking down -z, 60° field of view, near 0.5, far 50; texture-space bias.
+    const glm::mat4 bias =
+        glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+    const glm::mat4 map = bias * glm::perspective(1.0472f, 1.0f, 0.5f, 50.0f);
+    const float resolution = 512.0f;
+    const glm::vec3 point(0.3f, -0.2f, -6.0f);
+    const glm::vec3 normal = glm::normalize(glm::vec3(0.4f, 0.2f, 1.0f));
+    const glm::vec2 gradient = g::gsTangentPlaneGradient(map, point, normal, resolution);
+    const auto project = [&](const glm::vec3& p) {
+        const glm::vec4 clip = map * glm::vec4(p, 1.0f);
+        return glm::vec3(clip) / clip.w;
+    };
+    const glm::vec3 origin = project(point);
+    // Points of the plane several texels away: their depth must be the affine prediction (in double-free
+    // float, to a few ulps of the depth).
+    const glm::vec3 tangent = glm::normalize(glm::cross(normal, glm::vec3(0.0f, 1.0f, 0.0f)));
+    const glm::vec3 bitangent = glm::cross(normal, tangent);
+    for (const glm::vec2 step : {glm::vec2(0.02f, 0.0f), glm::vec2(0.0f, 0.03f), glm::vec2(-0.05f, 0.04f)}) {
+        const glm::vec3 there = project(point + step.x * tangent + step.y * bitangent);
+        const glm::vec2 texels = (glm::vec2(there) - glm::vec2(origin)) * resolution;
+        ASSERT_GT(glm::length(texels), 0.5f);
+        EXPECT_NEAR(there.z, origin.z + glm::dot(texels, gradient), 2e-6f);
     }
 }

@@ -115,6 +115,7 @@ LightProjection fitSpotLight(const glm::vec3& position, const glm::vec3& directi
     nearest = std::clamp(nearest * 0.99f, farthest * 1e-3f, farthest * 0.5f);
     const float fov = std::min(2.0f * outerConeAngle + 0.02f, 3.0f);
     result.projection = glm::perspective(fov, 1.0f, nearest, farthest * 1.01f);
+    result.depthRange = {nearest, farthest * 1.01f};
     result.worldToShadow = kClipToTexture * result.projection * result.view;
     result.texelScale = 2.0f * std::tan(0.5f * fov) / static_cast<float>(resolution);
     result.valid = true;

@@ -42,8 +42,8 @@ std::span<const EnumName<DepthFormat>> enumNames() {
 
 template <>
 std::span<const EnumName<CasterFaces>> enumNames() {
-    static constexpr std::array<EnumName<CasterFaces>, 2> names{
-        {{CasterFaces::Front, "front"}, {CasterFaces::Back, "back"}}};
+    static constexpr std::array<EnumName<CasterFaces>, 3> names{
+        {{CasterFaces::Both, "both"}, {CasterFaces::Front, "front"}, {CasterFaces::Back, "back"}}};
     return names;
 }
 

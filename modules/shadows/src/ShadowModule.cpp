@@ -180,8 +180,10 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    glEnable(GL_CULL_FACE);
-    glCullFace(settings_.casterFaces == CasterFaces::Front ? GL_BACK : GL_FRONT);
+    if (settings_.casterFaces != CasterFaces::Both) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(settings_.casterFaces == CasterFaces::Front ? GL_BACK : GL_FRONT);
+    }
     if (plan_.offsetsCasters) {
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
@@ -200,6 +202,7 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         glClear(GL_DEPTH_BUFFER_BIT);
         const glm::mat4 lightViewProjection = map->projection.projection * map->projection.view;
         program.set("uLightViewProjection", lightViewProjection);
+        program.set("uDepthRange", map->projection.depthRange);
         // Culled to the light's own clip volume: casters outside it could not write a texel.
         host_->drawMeshes(frame.scene, lightViewProjection, [&](engine::EntityId, const glm::mat4& model) {
             program.set("uModel", model);
@@ -305,6 +308,7 @@ void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
+        block.depthRange[slot] = glm::vec4(projection.depthRange, 0.0f, 0.0f);
     }
     for (std::size_t light = 0; light < slotOfLight.size(); ++light) {
         block.slotOfLight[light / 4][static_cast<glm::length_t>(light % 4)] = slotOfLight[light];
@@ -313,10 +317,11 @@ void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
     block.tapInverseCovariance[0] = glm::vec4(pattern_.inverseCovariance[0], 0.0f, 0.0f);
     block.tapInverseCovariance[1] = glm::vec4(pattern_.inverseCovariance[1], 0.0f, 0.0f);
     block.techniqueParameters = plan_.shaderParameters;
-    block.constantBias = settings_.constantBias;
+    block.constantBiasTexels = settings_.constantBiasTexels;
     block.depthStep = depthStep(settings_.depthFormat);
     block.fuzzyScale = settings_.fuzzyScale;
-    block.normalOffset = settings_.normalOffsetTexels;
+    block.normalOffset = plan_.normalOffsetTexels;
+    block.depthBias = plan_.depthBias;
     block.minimumVariance = settings_.vsmMinimumVariance;
     block.bleedingReduction = settings_.lightBleedingReduction;
     block.momentBias = settings_.msmMomentBias;

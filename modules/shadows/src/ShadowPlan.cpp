@@ -48,6 +48,9 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     if (plan.usesTapPattern && settings.pcfRotate) {
         defines.push_back("GS_SHADOW_ROTATE");
     }
+    if (plan.traits->footprintTexels) {
+        defines.push_back("GS_SHADOW_NORMAL_OFFSET");
+    }
     if (settings.floorReceiverDepth) {
         defines.push_back("GS_SHADOW_FLOOR");
     }
@@ -111,6 +114,12 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     plan.depthFormat = glDepthFormat(settings.depthFormat);
     plan.depthBytesPerTexel = settings.depthFormat == DepthFormat::D16 ? 2 : 4;
     plan.offsetsCasters = plan.traits->offsetsCasters;
+    if (plan.traits->footprintTexels) {
+        plan.normalOffsetTexels = plan.traits->footprintTexels(settings) + settings.normalOffsetTexels;
+    }
+    if (plan.traits->biasesDepth) {
+        plan.depthBias = settings.depthBiasSteps * depthBiasStep(settings.depthFormat);
+    }
     plan.needsJitterTexture = plan.traits->jittered;
     return plan;
 }

@@ -43,6 +43,12 @@ bool layoutForced(const S& s) {
 bool offsetsCasters(const S& s) {
     return traitsOf(s.technique).offsetsCasters;
 }
+bool offsetsAlongNormal(const S& s) {
+    return traitsOf(s.technique).footprintTexels != nullptr;
+}
+bool biasesDepth(const S& s) {
+    return traitsOf(s.technique).biasesDepth;
+}
 bool readsPointGradient(const S& s) {
     return traitsOf(s.technique).readsPointGradient;
 }
@@ -81,11 +87,14 @@ const std::vector<SettingRow>& rows() {
          always, "--shadow-size"},
         {"depthFormat", "", "depth format", "Depth format of the shadow map.",
          choice<DepthFormat, &S::depthFormat>(), always, "--depth-format"},
-        {"casterFaces", "", "caster faces", "Faces (as seen from the light) drawn into the shadow map.",
+        {"casterFaces", "", "caster faces",
+         "Faces (as seen from the light) drawn into the shadow map; both by default, since real models mix "
+         "windings and a culled face casts no shadow.",
          choice<CasterFaces, &S::casterFaces>(), always},
-        {"constantBias", "world units", "constant bias",
-         "Receiver moved towards the light before the comparison.",
-         FloatSetting{&S::constantBias, {}, 0.0f, 0.1f, "%.5f", true}, always},
+        {"constantBiasTexels", "texels", "constant bias",
+         "Receiver moved towards the light before the comparison, in shadow texel sizes at the receiver (so "
+         "one value holds at any scene scale and map size). 0: none, as the naive `hard` has it.",
+         FloatSetting{&S::constantBiasTexels, {.max = 64.0f}, 0.0f, 16.0f, "%.3f"}, always},
         {"slopeScale", "", "slope scale", "glPolygonOffset factor on the casters (scales their depth slope).",
          FloatSetting{&S::slopeScale, {}, 0.0f, 8.0f, "%.2f"}, offsetsCasters},
         {"slopeUnits", "", "slope units",
@@ -123,8 +132,18 @@ const std::vector<SettingRow>& rows() {
         {"receiverPlaneClamp", "", "clamp bias to min(0, bias)",
          "Only let the bias move receivers towards the light.", BoolSetting{&S::receiverPlaneClamp},
          only<T::ReceiverPlaneBias>},
-        {"normalOffsetTexels", "texels", "normal offset", "Receiver pushed along its normal, in texel sizes.",
-         FloatSetting{&S::normalOffsetTexels, {}, 0.0f, 8.0f, "%.2f"}, only<T::NormalOffset>},
+        {"normalOffsetTexels", "texels", "normal offset margin",
+         "Margin beyond the kernel's footprint: the receiver is pushed along its normal by (footprint + "
+         "this) "
+         "texel sizes times the sine of its angle to the light, which clears a plane over the footprint at "
+         "any angle (docs/SHADOWS.md, \"Automatic bias\").",
+         FloatSetting{&S::normalOffsetTexels, {.max = 16.0f}, 0.0f, 8.0f, "%.2f"}, offsetsAlongNormal},
+        {"depthBiasSteps", "depth steps", "depth bias",
+         "Comparison depth lowered by this many steps of the depth format, but steps no finer than 2^-18 "
+         "(the "
+         "float arithmetic's disagreement between the two passes): the rounding of stored and receiver "
+         "depths, which no slope-dependent bias covers where the receiver faces the light.",
+         FloatSetting{&S::depthBiasSteps, {.max = 1024.0f}, 0.0f, 1024.0f, "%.1f", true}, biasesDepth},
         {"floorReceiverDepth", "", "floor receiver depth",
          "Floor the reference to the format's step so the hardware comparison's rounding adds no acne.",
          BoolSetting{&S::floorReceiverDepth}, comparesInHardware},

@@ -2,12 +2,37 @@
 #include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/VisibilityMath.h>
 
+
 namespace shadows {
 
 namespace {
 
 using T = ShadowTechnique;
 using S = MapSampler;
+
+// Footprints of the hardware comparisons (ShadowTechniqueTraits::footprintTexels). A NEAREST comparison reads
+// the texel its lookup falls in, whose centre (where the caster's depth was rasterised) is up to half a texel
+// diagonal away; a LINEAR one blends the four texel centres around it, up to a diagonal away.
+constexpr float kNearestReach = 0.70710678f;
+constexpr float kBilinearReach = 1.41421356f;
+
+float nearestReach(const ShadowSettings&) {
+    return kNearestReach;
+}
+float bilinearReach(const ShadowSettings&) {
+    return kBilinearReach;
+}
+// The pattern's farthest tap (TapPattern.h): a grid's corner, or the radius (Poisson points lie inside it,
+// circular-8's on it). From the layout alone, so settings that validate() is about to refuse cannot throw here.
+float patternReach(const ShadowSettings& settings) {
+    const float farthest =
+        settings.pcfLayout == TapLayout::Grid ? settings.pcfRadius * kBilinearReach : settings.pcfRadius;
+    return farthest + kNearestReach;
+}
+// Jittered offsets fill the square [-pcfRadius, pcfRadius]² (TapPattern.h, makeJitterTexels).
+float jitterReach(const ShadowSettings& settings) {
+    return settings.pcfRadius * kBilinearReach + kNearestReach;
+}
 
 glm::vec2 evsmExponents(const ShadowSettings& settings) {
     return {settings.evsmPositiveExponent, settings.evsmNegativeExponent};
@@ -16,9 +41,11 @@ glm::vec2 evsmExponents(const ShadowSettings& settings) {
 const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardCompare,
      .name = "hard",
-     .summary = "one hardware comparison (sampler2DShadow, NEAREST) + constant bias (world units)",
+     .summary = "one hardware comparison (sampler2DShadow, NEAREST), no bias unless `constantBiasTexels` is "
+                "set: the naive reproduction of acne",
      .reference = "Williams 1978",
-     .defines = {"GS_SHADOW_SINGLE_COMPARE"}},
+     .defines = {"GS_SHADOW_SINGLE_COMPARE"},
+     .naive = true},
     {.technique = T::SlopeScaledBias,
      .name = "slope-scaled",
      .summary = "as `hard` plus `glPolygonOffset(slopeScale, slopeUnits)` on the casters",
@@ -29,13 +56,17 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .name = "hw-pcf",
      .summary = "hardware 2×2 bilinear PCF (sampler2DShadow, LINEAR)",
      .sampler = S::CompareLinear,
-     .defines = {"GS_SHADOW_SINGLE_COMPARE"}},
+     .defines = {"GS_SHADOW_SINGLE_COMPARE"},
+     .footprintTexels = bilinearReach,
+     .biasesDepth = true},
     {.technique = T::Pcf,
      .name = "pcf",
      .summary = "N-tap PCF: grid 2×2..8×8 or Poisson 8..64, optional per-pixel rotation",
      .reference = "Reeves et al. 1987",
      .defines = {"GS_SHADOW_PCF"},
-     .usesTapPattern = true},
+     .usesTapPattern = true,
+     .footprintTexels = patternReach,
+     .biasesDepth = true},
     {.technique = T::Gsm,
      .name = "gsm",
      .summary = "linear-filtered depth, fuzzy comparison `saturate(diff/|g| + 1)`; g stored by the depth "
@@ -44,6 +75,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_GSM"},
      .readsPointGradient = true,
+     .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmNaive,
      .name = "pcf-gsm-naive",
@@ -53,7 +85,8 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NONE"},
      .readsPointGradient = true,
      .usesTapPattern = true,
-     .fuzzyComparison = true},
+     .fuzzyComparison = true,
+     .naive = true},
     {.technique = T::PcfGsmPointGradient,
      .name = "pcf-gsm-point",
      .summary = "PCF over GSM, taps follow `dot(offset, g)` of the fragment's gradient",
@@ -62,6 +95,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_POINT"},
      .readsPointGradient = true,
      .usesTapPattern = true,
+     .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmAverageGradient,
      .name = "pcf-gsm-average",
@@ -71,6 +105,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_AVERAGE"},
      .usesTapPattern = true,
+     .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmQuadratic,
      .name = "pcf-gsm-quadratic",
@@ -80,6 +115,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
      .usesTapPattern = true,
+     .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::ReceiverPlaneBias,
      .name = "receiver-plane",
@@ -87,12 +123,16 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
                 "optional `min(0, bias)`, 2×2 bilinear via `textureGather`, or per tap",
      .reference = "bias reference, \"Receiver Plane Depth Bias\"",
      .sampler = S::DepthLinear,
-     .defines = {"GS_SHADOW_RECEIVER_PLANE"}},
+     .defines = {"GS_SHADOW_RECEIVER_PLANE"},
+     .biasesDepth = true},
     {.technique = T::NormalOffset,
      .name = "normal-offset",
-     .summary = "receiver pushed along its normal by `normalOffsetTexels` texel sizes",
+     .summary = "one hardware comparison, the receiver pushed along its normal by (half a texel diagonal + "
+                "`normalOffsetTexels`) texel sizes × sin(normal, light)",
      .reference = "bias reference, \"Alternatives\"",
-     .defines = {"GS_SHADOW_SINGLE_COMPARE", "GS_SHADOW_NORMAL_OFFSET"}},
+     .defines = {"GS_SHADOW_SINGLE_COMPARE"},
+     .footprintTexels = nearestReach,
+     .biasesDepth = true},
     {.technique = T::Vsm,
      .name = "vsm",
      .summary = "moments (z, z²) in RG32F, separable box blur (`momentBlurRadius`), mipmaps, trilinear "
@@ -136,7 +176,24 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "soft shadows reference (whose pseudo-code normalises by the full count even when it stops "
                   "early — we do not)",
      .defines = {"GS_SHADOW_JITTERED"},
+     .footprintTexels = jitterReach,
+     .biasesDepth = true,
      .jittered = true},
+    {.technique = T::AdaptiveBias,
+     .name = "adaptive-bias",
+     .summary =
+         "one hardware comparison at the depth of the receiver's tangent plane (from its normal) on the "
+         "light's ray through the texel's centre, minus `depthBiasSteps` format steps",
+     .reference = "Dou, Yan, Kerzner, Dai, Wyman, \"Adaptive Depth Bias for Shadow Maps\", JCGT 3(4) 2014",
+     .defines = {"GS_SHADOW_ADAPTIVE", "GS_SHADOW_TANGENT_PLANE"},
+     .biasesDepth = true},
+    {.technique = T::PcfAdaptiveBias,
+     .name = "pcf-adaptive-bias",
+     .summary = "`adaptive-bias` for every tap of the PCF pattern, each at its own texel's centre",
+     .reference = "Ehm et al., WSCG 2015",
+     .defines = {"GS_SHADOW_ADAPTIVE_PCF", "GS_SHADOW_TANGENT_PLANE"},
+     .usesTapPattern = true,
+     .biasesDepth = true},
 }};
 
 } // namespace

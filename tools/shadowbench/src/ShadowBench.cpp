@@ -119,12 +119,24 @@ ShadowBench::ShadowBench(const engine::GlContext& context, BenchOptions options)
 ShadowBench::ShadowBench(engine::TimingMethod method, BenchOptions options)
     : options_(std::move(options)), method_(method) {}
 
-std::unique_ptr<BenchScene> ShadowBench::prepare(const std::string& name,
-                                                 const std::filesystem::path& path) const {
+std::unique_ptr<BenchScene> ShadowBench::prepare(const std::string& name, const std::filesystem::path& path,
+                                                 const std::optional<engine::LightAngles>& light) const {
     content::LoadedScene loaded = content::GltfLoader::load(path);
     const auto camera = loaded.scene.firstCamera();
     if (!camera) {
         throw engine::Error("shadowbench: " + path.string() + " has no camera");
+    }
+    if (light) {
+        std::optional<engine::EntityId> caster;
+        loaded.scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+            if (!caster && entity.light && entity.light->castsShadows) {
+                caster = id;
+            }
+        });
+        if (!caster) {
+            throw engine::Error("shadowbench: " + path.string() + " has no shadow-casting light to point");
+        }
+        engine::aimLight(loaded.scene, *caster, *light);
     }
     return std::make_unique<BenchScene>(name, std::move(loaded.scene), *camera, options_);
 }
@@ -140,23 +152,16 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     // Timing: shaded frames, both passes, after a warm-up frame that compiles and uploads.
     engine::RenderTarget shaded(options_.size);
     engine.renderFrame(scene.scene_, scene.camera_, shaded);
-    engine.setPassTiming(method_);
-    std::vector<double> shadowTimes;
-    std::vector<double> lightingTimes;
-    for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
-        const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, shaded);
-        shadowTimes.push_back(stats.prePassMilliseconds);
-        lightingTimes.push_back(stats.lightingMilliseconds);
-    }
-    engine.setPassTiming(std::nullopt);
-    result.frame = timeFrames(engine, scene.scene_, scene.camera_, shaded, options_.frames);
-    result.shadowPass = summarise(shadowTimes);
-    result.lightingPass = summarise(lightingTimes);
     result.shadowBytes = module.stats().bytes;
     std::filesystem::path folder = options_.imageFolder / scene.name();
     result.shadedImage = folder / (config.label + ".png");
     result.shaded = shaded.readPixels();
     engine::writePng(result.shadedImage, result.shaded);
+    if (options_.timing) {
+        time(engine, scene, shaded, result);
+    } else {
+        result.frame = result.shadowPass = result.lightingPass = {-1.0, -1.0, -1.0};
+    }
 
     const Accuracy accuracy = measure(scene, config.settings);
     result.metrics = accuracy.metrics;
@@ -179,6 +184,22 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
         result.fullKernelFraction = covered ? static_cast<double>(full) / static_cast<double>(covered) : 0.0;
     }
     return result;
+}
+
+void ShadowBench::time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+                       BenchResult& result) const {
+    engine.setPassTiming(method_);
+    std::vector<double> shadowTimes;
+    std::vector<double> lightingTimes;
+    for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
+        const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, target);
+        shadowTimes.push_back(stats.prePassMilliseconds);
+        lightingTimes.push_back(stats.lightingMilliseconds);
+    }
+    engine.setPassTiming(std::nullopt);
+    result.frame = timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames);
+    result.shadowPass = summarise(shadowTimes);
+    result.lightingPass = summarise(lightingTimes);
 }
 
 Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const {
@@ -228,6 +249,8 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     accuracy.bandPixels = bandPixels;
     accuracy.classes = classify(options_.size, scene.truth_, scene.receivers_, accuracy.bandPixels);
     accuracy.metrics = computeMetrics(accuracy.classes, scene.truth_, accuracy.visibility, scene.concave_);
+    accuracy.metrics.edges =
+        edgePlacement(options_.size, accuracy.classes, scene.truth_, accuracy.visibility);
     return accuracy;
 }
 
@@ -243,7 +266,9 @@ SceneCost ShadowBench::measureCost(const BenchScene& scene) const {
     scene.scene_.forEach([&](engine::EntityId, const engine::Entity& entity) {
         cost.triangles += entity.mesh && entity.mesh->mesh ? entity.mesh->mesh->triangleCount() : 0;
     });
-    cost.unshadowedFrame = timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames);
+    cost.unshadowedFrame = options_.timing
+                               ? timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames)
+                               : PassTiming{-1.0, -1.0, -1.0};
     return cost;
 }
 
@@ -309,7 +334,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
     csv << "scene,label,technique,layout,taps,radius,resolution,format,acne_rate,leak_rate,darkening,"
            "concave_darkening,mae,rmse,receivers,lit,shadowed,band,concave,band_pixels,shadow_ms_median,"
            "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
-           "full_kernel_fraction,frame_ms_median,peer\n";
+           "full_kernel_fraction,frame_ms_median,peer,edge_true_to_rendered_mean,edge_true_to_rendered_p95,"
+           "edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,rendered_edge_pixels\n";
     for (const BenchResult& r : results) {
         const shadows::ShadowSettings& s = r.config.settings;
         const ShadowMetrics& m = r.metrics;
@@ -321,7 +347,10 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << m.band << ',' << m.concave << ',' << r.bandPixels << ',' << r.shadowPass.median << ','
             << r.shadowPass.min << ',' << r.shadowPass.max << ',' << r.lightingPass.median << ','
             << r.lightingPass.min << ',' << r.lightingPass.max << ',' << r.shadowBytes << ','
-            << r.fullKernelFraction << ',' << r.frame.median << ',' << r.peerClass << '\n';
+            << r.fullKernelFraction << ',' << r.frame.median << ',' << r.peerClass << ','
+            << m.edges.trueToRendered.mean << ',' << m.edges.trueToRendered.percentile95 << ','
+            << m.edges.renderedToTrue.mean << ',' << m.edges.renderedToTrue.percentile95 << ','
+            << m.edges.trueToRendered.count << ',' << m.edges.renderedToTrue.count << '\n';
     }
     return csv.str();
 }
@@ -359,6 +388,15 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                {"concave", m.concave},
                {"acne", m.acne},
                {"leak", m.leak}}},
+             {"edges",
+              {{"trueToRendered",
+                {{"pixels", m.edges.trueToRendered.count},
+                 {"mean", m.edges.trueToRendered.mean},
+                 {"p95", m.edges.trueToRendered.percentile95}}},
+               {"renderedToTrue",
+                {{"pixels", m.edges.renderedToTrue.count},
+                 {"mean", m.edges.renderedToTrue.mean},
+                 {"p95", m.edges.renderedToTrue.percentile95}}}}},
              {"bandPixels", r.bandPixels},
              {"shadowPassMs",
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
@@ -366,6 +404,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
               {{"median", r.lightingPass.median}, {"min", r.lightingPass.min}, {"max", r.lightingPass.max}}},
              {"frameMs", {{"median", r.frame.median}, {"min", r.frame.min}, {"max", r.frame.max}}},
              {"peer", r.peerClass.empty() ? nlohmann::json() : nlohmann::json(r.peerClass)},
+             {"naive", r.peerClass.empty() && shadows::traitsOf(r.config.settings.technique).naive},
              {"peerUnlitReceivers", r.peerUnlitReceivers},
              {"shadowBytes", r.shadowBytes},
              {"fullKernelFraction", r.fullKernelFraction},

@@ -2,12 +2,113 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowbench {
 
 namespace {
 std::size_t indexOf(glm::ivec2 size, int x, int y) {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
+}
+
+/// Exact squared Euclidean distance of a sampled function along one line, in place (Felzenszwalb &
+/// Huttenlocher, "Distance Transforms of Sampled Functions", ToC 2012, section 2.1: the lower envelope of the
+/// parabolas rooted at each sample).
+void distanceTransform1d(std::vector<double>& f) {
+    const int n = static_cast<int>(f.size());
+    std::vector<double> out(f.size());
+    std::vector<int> roots(f.size());
+    std::vector<double> bounds(f.size() + 1);
+    int k = -1;
+    for (int q = 0; q < n; ++q) {
+        if (!std::isfinite(f[static_cast<std::size_t>(q)])) {
+            continue; // no sample here: its parabola lies at infinity
+        }
+        double s = -std::numeric_limits<double>::infinity();
+        while (k >= 0) {
+            const int r = roots[static_cast<std::size_t>(k)];
+            s = ((f[static_cast<std::size_t>(q)] + q * q) - (f[static_cast<std::size_t>(r)] + r * r)) /
+                (2.0 * (q - r));
+            if (s > bounds[static_cast<std::size_t>(k)]) {
+                break;
+            }
+            --k;
+        }
+        ++k;
+        roots[static_cast<std::size_t>(k)] = q;
+        bounds[static_cast<std::size_t>(k)] = k == 0 ? -std::numeric_limits<double>::infinity() : s;
+        bounds[static_cast<std::size_t>(k) + 1] = std::numeric_limits<double>::infinity();
+    }
+    if (k < 0) {
+        return; // nothing on this line
+    }
+    int j = 0;
+    for (int q = 0; q < n; ++q) {
+        while (bounds[static_cast<std::size_t>(j) + 1] < q) {
+            ++j;
+        }
+        const int r = roots[static_cast<std::size_t>(j)];
+        out[static_cast<std::size_t>(q)] =
+            (q - r) * static_cast<double>(q - r) + f[static_cast<std::size_t>(r)];
+    }
+    f = std::move(out);
+}
+
+/// Squared distance from every pixel to the nearest set pixel of `mask` (infinite when none is set).
+std::vector<double> squaredDistanceTo(glm::ivec2 size, const std::vector<std::uint8_t>& mask) {
+    std::vector<double> distance(mask.size());
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        distance[i] = mask[i] ? 0.0 : std::numeric_limits<double>::infinity();
+    }
+    std::vector<double> line;
+    for (int x = 0; x < size.x; ++x) {
+        line.resize(static_cast<std::size_t>(size.y));
+        for (int y = 0; y < size.y; ++y) {
+            line[static_cast<std::size_t>(y)] = distance[indexOf(size, x, y)];
+        }
+        distanceTransform1d(line);
+        for (int y = 0; y < size.y; ++y) {
+            distance[indexOf(size, x, y)] = line[static_cast<std::size_t>(y)];
+        }
+    }
+    for (int y = 0; y < size.y; ++y) {
+        line.assign(distance.begin() + static_cast<std::ptrdiff_t>(indexOf(size, 0, y)),
+                    distance.begin() +
+                        static_cast<std::ptrdiff_t>(indexOf(size, 0, y) + static_cast<std::size_t>(size.x)));
+        distanceTransform1d(line);
+        std::copy(line.begin(), line.end(),
+                  distance.begin() + static_cast<std::ptrdiff_t>(indexOf(size, 0, y)));
+    }
+    return distance;
+}
+
+EdgeDistances distancesFrom(glm::ivec2 size, const std::vector<std::uint8_t>& from,
+                            const std::vector<std::uint8_t>& to) {
+    const std::vector<double> squared = squaredDistanceTo(size, to);
+    const double diagonal = std::hypot(static_cast<double>(size.x), static_cast<double>(size.y));
+    std::vector<double> distances;
+    for (std::size_t i = 0; i < from.size(); ++i) {
+        if (from[i]) {
+            distances.push_back(std::isfinite(squared[i]) ? std::sqrt(squared[i]) : diagonal);
+        }
+    }
+    EdgeDistances result;
+    result.count = distances.size();
+    if (distances.empty()) {
+        return result;
+    }
+    double sum = 0.0;
+    for (const double d : distances) {
+        sum += d;
+    }
+    result.mean = sum / static_cast<double>(distances.size());
+    // Nearest-rank percentile: the smallest distance at least 95 % of the edge pixels do not exceed.
+    const std::size_t rank =
+        static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(distances.size())));
+    std::nth_element(distances.begin(), distances.begin() + static_cast<std::ptrdiff_t>(rank - 1),
+                     distances.end());
+    result.percentile95 = distances[rank - 1];
+    return result;
 }
 } // namespace
 
@@ -105,6 +206,36 @@ ShadowMetrics computeMetrics(std::span<const PixelClass> classes, std::span<cons
     m.meanAbsoluteError = ratio(absoluteSum, m.receivers);
     m.rootMeanSquareError = std::sqrt(ratio(squareSum, m.receivers));
     return m;
+}
+
+std::vector<std::uint8_t> edgePixels(glm::ivec2 size, std::span<const PixelClass> classes,
+                                     std::span<const float> visibility) {
+    std::vector<std::uint8_t> edges(classes.size(), 0);
+    const auto litReceiver = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= size.x || y >= size.y) {
+            return false;
+        }
+        const std::size_t j = indexOf(size, x, y);
+        return classes[j] != PixelClass::Ignored && visibility[j] >= 0.5f;
+    };
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = indexOf(size, x, y);
+            if (classes[i] == PixelClass::Ignored || visibility[i] >= 0.5f) {
+                continue;
+            }
+            edges[i] = litReceiver(x - 1, y) || litReceiver(x + 1, y) || litReceiver(x, y - 1) ||
+                       litReceiver(x, y + 1);
+        }
+    }
+    return edges;
+}
+
+EdgePlacement edgePlacement(glm::ivec2 size, std::span<const PixelClass> classes,
+                            std::span<const float> truth, std::span<const float> visibility) {
+    const std::vector<std::uint8_t> trueEdges = edgePixels(size, classes, truth);
+    const std::vector<std::uint8_t> renderedEdges = edgePixels(size, classes, visibility);
+    return {distancesFrom(size, trueEdges, renderedEdges), distancesFrom(size, renderedEdges, trueEdges)};
 }
 
 std::vector<std::uint8_t> concaveMask(glm::ivec2 size, std::span<const glm::vec3> positions,

@@ -31,6 +31,11 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
                         (e.g. "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true")
   --size WxH            image size                                          [640x480]
   --frames N            timed frames per configuration                      [5]
+  --accuracy-only       measure accuracy only, no timing (times are -1)
+  --defaults            each technique once, at its defaults (ignores --taps, --radius, --resolutions,
+                        --formats); rows are labelled with the technique's name
+  --light-sweep AZ:EL   point each scene's shadow-casting light from every azimuth x elevation (degrees,
+                        comma-separated lists, e.g. 30,150:40,15,5,1); rows are "<scene>-az<A>-el<E>"
   --band TEXELS         boundary band half-width around true shadow edges   [2]
   --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
   --out DIR             where results.csv, results.json and images go       [bench]
@@ -64,8 +69,29 @@ struct Options {
     std::vector<shadowbench::BenchConfig> extra;
     std::filesystem::path contentFolder = GS_CONTENT_DIR;
     std::optional<std::filesystem::path> peerFolder;
+    /// Empty: each scene's own light only.
+    std::vector<engine::LightAngles> lights;
+    bool defaults = false;
     shadowbench::BenchOptions bench;
 };
+
+std::vector<engine::LightAngles> lightSweep(const std::string& spec) {
+    const auto colon = spec.find(':');
+    if (colon == std::string::npos) {
+        usageError("--light-sweep: '" + spec + "' is not AZIMUTHS:ELEVATIONS");
+    }
+    std::vector<engine::LightAngles> lights;
+    for (const std::string& azimuth : splitList(spec.substr(0, colon))) {
+        for (const std::string& elevation : splitList(spec.substr(colon + 1))) {
+            lights.push_back({cli::numberIn("--light-sweep azimuth", azimuth, -360.0f, 360.0f),
+                              cli::numberIn("--light-sweep elevation", elevation, 0.1f, 90.0f)});
+        }
+    }
+    if (lights.empty()) {
+        usageError("--light-sweep: '" + spec + "' names no direction");
+    }
+    return lights;
+}
 
 Options parse(int argc, char** argv) {
     Options options;
@@ -131,6 +157,12 @@ Options parse(int argc, char** argv) {
             options.bench.size = cli::sizeIn("--size", value(), 16, 4096);
         } else if (arg == "--frames") {
             options.bench.frames = cli::integerIn("--frames", value(), 1, 1000);
+        } else if (arg == "--defaults") {
+            options.defaults = true;
+        } else if (arg == "--accuracy-only") {
+            options.bench.timing = false;
+        } else if (arg == "--light-sweep") {
+            options.lights = lightSweep(value());
         } else if (arg == "--band") {
             options.bench.bandTexels = cli::numberIn("--band", value(), 0.0f, 64.0f);
         } else if (arg == "--soft") {
@@ -160,6 +192,16 @@ Options parse(int argc, char** argv) {
 /// The sweep: every technique at every resolution and format; pattern techniques once per tap count.
 std::vector<shadowbench::BenchConfig> configurations(const Options& options) {
     std::vector<shadowbench::BenchConfig> configs;
+    if (options.defaults) {
+        for (const shadows::ShadowTechnique technique : options.techniques) {
+            shadowbench::BenchConfig config;
+            config.settings.technique = technique;
+            config.label = std::string(shadows::toString(technique));
+            configs.push_back(config);
+        }
+        configs.insert(configs.end(), options.extra.begin(), options.extra.end());
+        return configs;
+    }
     for (const shadows::ShadowTechnique technique : options.techniques) {
         const bool patterned = shadows::techniqueTable()[static_cast<std::size_t>(technique)].usesTapPattern;
         const std::vector<int> taps = patterned ? options.taps : std::vector<int>{options.taps.front()};
@@ -223,14 +265,26 @@ int main(int argc, char** argv) {
         engine::HeadlessContext context;
         const shadowbench::ShadowBench bench(context, options.bench);
         const std::vector<shadowbench::BenchConfig> configs = configurations(options);
-        const std::size_t total = configs.size() * options.scenes.size();
+        // Each scene under its own light, or under every light of the sweep.
+        std::vector<std::pair<std::string, std::optional<engine::LightAngles>>> views;
+        for (const std::string& sceneName : options.scenes) {
+            if (options.lights.empty()) {
+                views.emplace_back(sceneName, std::nullopt);
+            }
+            for (const engine::LightAngles& light : options.lights) {
+                views.emplace_back(sceneName, light);
+            }
+        }
+        const std::size_t total = configs.size() * views.size();
         std::vector<shadowbench::BenchResult> results;
         std::vector<shadowbench::SceneCost> costs;
         std::cout << "gs-shadowbench: " << total << " runs on " << context.renderer() << ", timing by "
-                  << engine::PassTimer::describe(bench.timingMethod()) << "\n";
-        for (const std::string& sceneName : options.scenes) {
+                  << (options.bench.timing ? engine::PassTimer::describe(bench.timingMethod()) : "nothing")
+                  << "\n";
+        for (const auto& [sceneName, light] : views) {
             const std::filesystem::path path = cli::scenePath(sceneName, options.contentFolder);
-            const auto scene = bench.prepare(path.stem().string(), path);
+            const std::string name = path.stem().string() + (light ? "-" + light->label() : std::string());
+            const auto scene = bench.prepare(name, path, light);
             std::vector<engine::Image> shaded;
             for (const shadowbench::BenchConfig& config : configs) {
                 shadowbench::BenchResult result = bench.run(*scene, config);
@@ -239,8 +293,9 @@ int main(int argc, char** argv) {
                 const shadowbench::ShadowMetrics& m = results.back().metrics;
                 std::cout << "[" << results.size() << "/" << total << "] " << scene->name() << " "
                           << config.label << ": acne " << std::setprecision(3) << m.acneRate << ", leak "
-                          << m.leakRate << ", MAE " << m.meanAbsoluteError << ", shadow "
-                          << results.back().shadowPass.median << " ms, lighting "
+                          << m.leakRate << ", darkening " << m.darkening << ", edges "
+                          << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean
+                          << " px, shadow " << results.back().shadowPass.median << " ms, lighting "
                           << results.back().lightingPass.median << " ms\n"
                           << std::flush;
             }

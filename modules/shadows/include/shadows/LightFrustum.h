@@ -24,6 +24,8 @@ struct LightProjection {
     /// Orthographic: world size of one texel. Perspective: 2·tan(fov/2)/resolution (times distance = texel
     /// size).
     float texelScale = 0.0f;
+    /// Perspective: the near and far plane distances; zero for orthographic maps (gsLinearDepth).
+    glm::vec2 depthRange{0.0f};
     /// False when nothing visible can receive a shadow from this light (no map needs drawing).
     bool valid = false;
 };

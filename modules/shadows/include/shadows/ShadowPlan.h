@@ -43,6 +43,12 @@ struct ShadowPlan {
 
     /// Polygon offset on the casters (slopeScale, slopeUnits).
     bool offsetsCasters = false;
+    /// Texel sizes the receiver is pushed along its normal (times the sine of its angle to the light): the
+    /// technique's footprint plus normalOffsetTexels; 0 for techniques without a footprint.
+    float normalOffsetTexels = 0.0f;
+    /// Depth units the comparison depth is lowered by (depthBiasSteps format steps; 0 unless the technique
+    /// biasesDepth).
+    float depthBias = 0.0f;
     /// The stratified jitter texture of jittered PCF is bound.
     bool needsJitterTexture = false;
 };

@@ -22,7 +22,11 @@ enum class GradientSource {
 enum class DepthFormat { D16, D24, D32F };
 
 /// @brief Which faces (as seen from the light) are rendered into the shadow map.
-enum class CasterFaces { Front, Back };
+enum class CasterFaces {
+    Both,  ///< every triangle: right for meshes of any winding (real models often mix windings)
+    Front, ///< triangles facing the light (counter-clockwise seen from it)
+    Back,  ///< triangles facing away: the far side of closed meshes, which moves acne off lit surfaces
+};
 
 /// @brief Form of the average-gradient computation for PcfGsmAverageGradient.
 enum class AverageGradientForm {
@@ -56,8 +60,9 @@ struct ShadowSettings {
     ShadowTechnique technique = ShadowTechnique::PcfGsmAverageGradient;
     int resolution = 2048;
     DepthFormat depthFormat = DepthFormat::D24;
-    CasterFaces casterFaces = CasterFaces::Front;
-    float constantBias = 0.002f;
+    CasterFaces casterFaces = CasterFaces::Both;
+    float constantBiasTexels = 0.0f;
+    float depthBiasSteps = 4.0f;
     float slopeScale = 1.5f;
     float slopeUnits = 2.0f;
     TapLayout pcfLayout = TapLayout::Grid;
@@ -69,7 +74,7 @@ struct ShadowSettings {
     AverageGradientForm averageGradientForm = AverageGradientForm::LeastSquares;
     ReceiverPlaneKernel receiverPlaneKernel = ReceiverPlaneKernel::Bilinear2x2;
     bool receiverPlaneClamp = true;
-    float normalOffsetTexels = 1.5f;
+    float normalOffsetTexels = 1.0f;
     bool floorReceiverDepth = false;
     bool texelSnapping = true;
     int momentBlurRadius = 2;
@@ -125,5 +130,8 @@ std::optional<ShadowDebugView> debugViewFromString(std::string_view name);
 
 /// @brief Depth step of a format: 1/65535 (D16), 1/16777215 (D24), 0 for D32F (float, no fixed step).
 float depthStep(DepthFormat format);
+/// @brief The step depthBiasSteps counts: the format's step, but no finer than 2^-18, how far the float
+/// arithmetic of the two depth paths (shadow pass, lighting pass) was measured to disagree.
+float depthBiasStep(DepthFormat format);
 
 } // namespace shadows

@@ -13,7 +13,7 @@ namespace shadows {
 
 /// @brief The visibility functions the module can run; each selectable at run time.
 enum class ShadowTechnique {
-    HardCompare,           ///< 1. one hardware comparison (sampler2DShadow, NEAREST) + constant bias
+    HardCompare,           ///< 1. one hardware comparison (sampler2DShadow, NEAREST), no bias: naive
     SlopeScaledBias,       ///< 2. as 1, with slope-scaled polygon offset on the casters
     HardwarePcf,           ///< 3. hardware 2x2 bilinear PCF (sampler2DShadow, LINEAR)
     Pcf,                   ///< 4. N-tap PCF (grid or Poisson), optional per-pixel rotation
@@ -23,15 +23,17 @@ enum class ShadowTechnique {
     PcfGsmAverageGradient, ///< 8. PCF over GSM, taps follow the least-squares gradient of the taps
     PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
     ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
-    NormalOffset,          ///< 11. receiver pushed along its normal by a number of texel sizes
+    NormalOffset,          ///< 11. receiver pushed along its normal, one hardware comparison
     Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
-    Msm,         ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
-    Evsm,        ///< exponential variance shadow map: two warped depths and their squares, Chebyshev on each
-    JitteredPcf, ///< PCF over a stratified jitter texture, optional early-out on a few test taps
+    Msm,          ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
+    Evsm,         ///< exponential variance shadow map: two warped depths and their squares, Chebyshev on each
+    JitteredPcf,  ///< PCF over a stratified jitter texture, optional early-out on a few test taps
+    AdaptiveBias, ///< one comparison at the receiver's tangent plane's depth at the texel centre
+    PcfAdaptiveBias, ///< the same for every PCF tap
 };
 
 /// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::JitteredPcf) + 1;
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::PcfAdaptiveBias) + 1;
 
 /// @brief How the lighting pass samples a technique's shadow map.
 enum class MapSampler {
@@ -80,6 +82,13 @@ struct ShadowTechniqueTraits {
     bool usesTapPattern = false;
     /// Renders casters with slope-scaled polygon offset.
     bool offsetsCasters = false;
+    /// How far, in texels, the technique's hardware comparisons reach from the receiver's own position in
+    /// the map (its kernel's footprint). Such a technique pushes the receiver along its normal to clear its
+    /// own surface over that reach (normalOffsetTexels adds a margin; depthBiasSteps applies); null for
+    /// techniques that need no such offset.
+    float (*footprintTexels)(const ShadowSettings&) = nullptr;
+    /// Lowers its comparison depth by depthBiasSteps steps of the depth format.
+    bool biasesDepth = false;
     /// Compares at receiver depths from a gradient with a fuzzy band (fuzzyScale applies).
     bool fuzzyComparison = false;
     /// Takes its taps from the stratified jitter texture.
@@ -87,6 +96,9 @@ struct ShadowTechniqueTraits {
     /// Bounds visibility by Chebyshev's inequality on filtered moments (vsmMinimumVariance and
     /// lightBleedingReduction apply).
     bool chebyshevBound = false;
+    /// A deliberately naive reproduction (of acne, of darkening): exempt from the accuracy floors its
+    /// defaults are held to elsewhere.
+    bool naive = false;
 };
 
 /// @brief Every technique's row, in ShadowTechnique order.

@@ -6,14 +6,15 @@ const int GS_SHADOW_MAX_MAPS = 4;
 layout(std140, binding = 1) uniform GsShadowBlock {
     mat4 gsShadowMatrix[GS_SHADOW_MAX_MAPS];    // world -> shadow texture space (divide by w)
     vec4 gsShadowTexel[GS_SHADOW_MAX_MAPS];     // x resolution, y 1/resolution, z texel scale, w perspective
+    vec4 gsShadowDepthRange[GS_SHADOW_MAX_MAPS]; // xy near, far of a perspective map; zero for orthographic
     ivec4 gsShadowSlots[GS_MAX_LIGHTS / 4];     // shadow map of each engine light, -1 for none
     mat4 gsShadowMsmDequantize;                 // MSM 16-bit: inverse of the optimised basis
     mat2 gsTapInverseCovariance;
     vec4 gsShadowTechniqueParameters;           // the technique's own (ShadowTechniqueTraits::shaderParameters)
-    float gsShadowConstantBias;                 // world units towards the light
+    float gsShadowConstantBiasTexels;           // texel sizes towards the light
     float gsShadowDepthStep;                    // depth format step (0 for float)
     float gsShadowFuzzyScale;                   // GSM band width in texels
-    float gsShadowNormalOffset;                 // normal offset in texel sizes
+    float gsShadowNormalOffset;                 // texel sizes along the normal, times sin(normal, light)
     float gsShadowMinimumVariance;              // VSM
     float gsShadowBleedingReduction;            // VSM
     float gsShadowMomentBias;                   // MSM
@@ -23,5 +24,6 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     int gsEarlyOutPairs;                        // 0: always the full kernel
     int gsTapCount;
     float gsTapDisplace;                        // circular-8 d, texels
+    float gsShadowDepthBias;                    // depth units the comparison depth is lowered by
 };
 

@@ -10,6 +10,9 @@
 #include "visibility.glsl"
 #include "techniques.glsl"
 
+// Near and far of a perspective map, zero for orthographic ones (gsLinearDepth).
+uniform vec2 uDepthRange;
+
 #if defined(GS_SHADOW_STORE_GRADIENT)
 layout(location = 0) out vec2 outValue;
 #elif defined(GS_SHADOW_STORED_MOMENTS)
@@ -21,6 +24,6 @@ void main() {
     // One fragment is one texel, so these are dz per texel step.
     outValue = vec2(dFdxFine(gl_FragCoord.z), dFdyFine(gl_FragCoord.z));
 #elif defined(GS_SHADOW_STORED_MOMENTS)
-    outValue = gsShadowStore(gl_FragCoord.z);
+    outValue = gsShadowStore(gsLinearDepth(gl_FragCoord.z, uDepthRange));
 #endif
 }

@@ -25,8 +25,10 @@ struct GsShadowLookup {
     vec2 coord;          // shadow texture coordinates
     vec2 texel;          // the same in texels
     float depth;         // receiver depth in the map's [0,1] range
+    float momentDepth;   // the same as the moments store it (gsLinearDepth)
     vec2 pointGradient;  // the fragment's depth gradient per texel (GS_SHADOW_GRADIENT_*), else zero
     vec2 screenGradient; // receiver plane from screen derivatives, where a technique needs it
+    vec2 tangentGradient; // depth per texel of the receiver's tangent plane (GS_SHADOW_TANGENT_PLANE), else zero
 };
 
 // What a technique returns: visibility, and what the debug views show.
@@ -89,12 +91,20 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     if (slot < 0) {
         return 1.0;
     }
-    vec3 position = worldPosition + toLight * gsShadowConstantBias;
-#ifdef GS_SHADOW_NORMAL_OFFSET
     // One texel's world size at the receiver: constant for orthographic maps, growing with distance for spots.
+    // Biases are in these units, so one value holds at any scene scale and map size.
     vec4 lightSpace = gsShadowMatrix[slot] * vec4(worldPosition, 1.0);
     float texelSize = gsShadowTexel[slot].w > 0.5 ? gsShadowTexel[slot].z * abs(lightSpace.w) : gsShadowTexel[slot].z;
-    position += normal * (gsShadowNormalOffset * texelSize);
+    vec3 position = worldPosition + toLight * (gsShadowConstantBiasTexels * texelSize);
+#ifdef GS_SHADOW_NORMAL_OFFSET
+    // A perspective map measures depth along its axis, so a receiver facing the light but not the axis still
+    // slopes in depth there: offset for the steeper of the two angles.
+    float cosine = abs(dot(normal, toLight));
+    if (gsShadowTexel[slot].w > 0.5) {
+        mat4 m = gsShadowMatrix[slot];
+        cosine = min(cosine, abs(dot(normal, normalize(vec3(m[0][3], m[1][3], m[2][3])))));
+    }
+    position += normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
 #endif
     vec4 clip = gsShadowMatrix[slot] * vec4(position, 1.0);
     // Behind a spot light (w <= 0) nothing is mapped; the cone attenuation is zero there anyway.
@@ -102,17 +112,29 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     vec3 coord = clip.xyz / w;
     lookup.coord = coord.xy;
     lookup.texel = coord.xy * gsShadowTexel[slot].x;
-    lookup.depth = coord.z;
+    lookup.depth = coord.z - gsShadowDepthBias;
+    lookup.momentDepth = gsLinearDepth(lookup.depth, gsShadowDepthRange[slot].xy);
     // Screen derivatives must be taken before any per-pixel branch.
     lookup.screenGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
     lookup.screenGradient = gsReceiverPlaneGradient(dFdxFine(lookup.texel), dFdyFine(lookup.texel),
                                                     dFdxFine(lookup.depth), dFdyFine(lookup.depth));
 #endif
+#ifdef GS_SHADOW_TANGENT_PLANE
+    // The facet's own plane (derivatives of the interpolated position stay within one triangle), not the
+    // interpolated normal, which bends across creases: the depths in the map come from facets.
+    vec3 facetNormal = cross(dFdxFine(worldPosition), dFdyFine(worldPosition));
+    facetNormal = dot(facetNormal, normal) < 0.0 ? -facetNormal : facetNormal;
+#endif
     if (clip.w <= 0.0 || lookup.depth >= 1.0) {
         return 1.0; // outside the light's depth range: nothing can occlude
     }
 
+    lookup.tangentGradient = vec2(0.0);
+#ifdef GS_SHADOW_TANGENT_PLANE
+    lookup.tangentGradient =
+        gsTangentPlaneGradient(gsShadowMatrix[slot], worldPosition, facetNormal, gsShadowTexel[slot].x);
+#endif
     lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
     lookup.pointGradient = texture(gsShadowGradientMap[slot], lookup.coord).rg;

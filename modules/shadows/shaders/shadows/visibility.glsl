@@ -29,6 +29,44 @@ float gsFuzzyVisibility(float storedDepth, float receiverDepth, float gradientMa
     return gsSaturate((storedDepth - receiverDepth) / width + 1.0f);
 }
 
+// Normal offset (bias reference, "Alternatives": growing the receiver along its normal), sized so that no
+// lookup within `reach` (world units in the map's plane) of the receiver's own sees its surface in front of it.
+// On a plane at angle θ to the light (cosθ = `cosine`), a lookup r away meets surface depth r·tanθ nearer to
+// the light; a point h above the plane along its normal lies h/cosθ in front of the plane behind it, so
+// h = r·sinθ is just enough at any angle, and moves the lookup by only h·sinθ <= r. Facing the light (θ = 0)
+// needs no offset; the depth bias covers rounding there.
+float gsNormalOffset(float reach, float cosine) {
+    float c = clamp(cosine, -1.0f, 1.0f);
+    return reach * sqrt(max(1.0f - c * c, 0.0f));
+}
+
+// Adaptive depth bias (Dou, Yan, Kerzner, Dai, Wyman, "Adaptive Depth Bias for Shadow Maps", JCGT 3(4), 2014,
+// section 3): the receiver's tangent plane (through `position`, normal `normal`) seen in the shadow map. A
+// projective map takes planes to planes, so the plane's map depth is exactly affine in the map's coordinates,
+// and its gradient follows from the images of two tangent vectors t under the map's derivative at p:
+// (M t).xyz / w - (M p).xyz (M t).w / w². Returns dz per texel; zero where the plane contains the light's rays
+// (edge-on, where it has no depth to predict) or the normal is degenerate.
+vec2 gsTangentPlaneGradient(mat4 worldToShadow, vec3 position, vec3 normal, float resolution) {
+    if (!(dot(normal, normal) > 1e-20f)) {
+        return vec2(0.0f);
+    }
+    vec3 helper = abs(normal.x) < 0.9f * length(normal) ? vec3(1.0f, 0.0f, 0.0f) : vec3(0.0f, 1.0f, 0.0f);
+    vec3 tangent = normalize(cross(normal, helper));
+    vec3 bitangent = normalize(cross(normal, tangent));
+    vec4 p = worldToShadow * vec4(position, 1.0f);
+    float w = abs(p.w) > 1e-20f ? p.w : 1e-20f;
+    vec4 a = worldToShadow * vec4(tangent, 0.0f);
+    vec4 b = worldToShadow * vec4(bitangent, 0.0f);
+    vec3 imageA = (vec3(a) - vec3(p) * (a.w / w)) / w;
+    vec3 imageB = (vec3(b) - vec3(p) * (b.w / w)) / w;
+    vec3 texels = vec3(resolution, resolution, 1.0f);
+    vec3 n = cross(imageA * texels, imageB * texels);
+    if (!(abs(n.z) > 1e-6f * length(n))) {
+        return vec2(0.0f);
+    }
+    return vec2(-n.x / n.z, -n.y / n.z);
+}
+
 // Receiver plane depth bias (bias reference, "Receiver Plane Depth Bias"): dz/duv from screen derivatives by the
 // chain rule, inverting the 2x2 Jacobian d(uv)/d(xy). Returns zero where the Jacobian is (nearly) singular —
 // the receiver is seen edge-on or the pixel quad straddles a discontinuity — rather than an unbounded slope.
@@ -157,6 +195,21 @@ float gsBilinear(vec4 visibilities, vec2 weights) {
 }
 
 // ---- Filtered shadow maps (advanced shadow mapping reference: VSM, MSM) ----
+
+// The depth moments are taken of: a perspective map's [0,1] depth d crowds towards 1 as far/near grows (at
+// far/near 1000 most of the scene lies above 0.99, where occluder and receiver differ by less than the
+// minimum variance), so for perspective maps (`depthRange` = near, far > 0) the moments store the distance
+// along the axis, normalised to [0,1]: z = n f / (f - d (f - n)), (z - n) / (f - n). Orthographic depth is
+// already linear and passes through.
+float gsLinearDepth(float depth, vec2 depthRange) {
+    float near = depthRange.x;
+    float far = depthRange.y;
+    if (!(far > near) || !(near > 0.0f)) {
+        return depth;
+    }
+    float distance = near * far / max(far - depth * (far - near), near * 1e-6f);
+    return gsSaturate((distance - near) / (far - near));
+}
 
 // Variance shadow maps (Donnelly & Lauritzen 2006): Chebyshev's one-tailed bound on the fraction of the filter
 // region at or behind the receiver. The early return where the mean lies beyond the receiver is the reference's

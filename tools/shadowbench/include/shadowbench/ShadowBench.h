@@ -4,9 +4,12 @@
 #include <shadowbench/ShadowMetrics.h>
 
 #include <content/GltfLoader.h>
+#include <engine/Engine.h>
 #include <engine/GlContext.h>
 #include <engine/Image.h>
+#include <engine/LightAim.h>
 #include <engine/PassTimer.h>
+#include <engine/RenderTarget.h>
 #include <shadows/ShadowSettings.h>
 
 #include <filesystem>
@@ -84,6 +87,9 @@ struct BenchOptions {
     glm::ivec2 size{640, 480};
     /// Timed frames after one warm-up frame. Default 5.
     int frames = 5;
+    /// Whether run() times frames and passes; without, only accuracy is measured (times are -1). Default
+    /// true.
+    bool timing = true;
     /// Half-width of the boundary band around true shadow edges, in shadow-map texels. Default 2.
     float bandTexels = 2.0f;
     /// Soft ground truth: stratified samples per axis (0 = hard ground truth). Default 0.
@@ -126,9 +132,11 @@ public:
     ShadowBench(engine::TimingMethod method, BenchOptions options);
 
     /// @brief Loads `path` (a glTF), renders its G-buffer and ray-traces the ground truth for its first
-    /// shadow-casting light. Throws engine::Error subclasses naming the file on bad input.
-    [[nodiscard]] std::unique_ptr<BenchScene> prepare(const std::string& name,
-                                                      const std::filesystem::path& path) const;
+    /// shadow-casting light, pointed from `light` when given (engine::aimLight) instead of the file's
+    /// direction. Throws engine::Error subclasses naming the file on bad input.
+    [[nodiscard]] std::unique_ptr<BenchScene>
+    prepare(const std::string& name, const std::filesystem::path& path,
+            const std::optional<engine::LightAngles>& light = {}) const;
 
     /// @brief Measures one configuration on one scene and writes its images.
     BenchResult run(const BenchScene& scene, const BenchConfig& config) const;
@@ -152,6 +160,10 @@ public:
     [[nodiscard]] const BenchOptions& options() const { return options_; }
 
 private:
+    /// Pass and whole-frame times of `engine`, already warmed up on `scene`.
+    void time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+              BenchResult& result) const;
+
     BenchOptions options_;
     engine::TimingMethod method_;
 };

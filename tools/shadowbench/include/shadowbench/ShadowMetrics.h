@@ -18,6 +18,24 @@ enum class PixelClass : std::uint8_t {
     Shadowed, ///< truly shadowed by another surface, outside the band
 };
 
+/// @brief Distances in pixels from each edge pixel of one image to the nearest edge pixel of another.
+struct EdgeDistances {
+    /// Edge pixels the distances start from.
+    std::size_t count = 0;
+    double mean = 0.0;
+    double percentile95 = 0.0;
+};
+
+/// @brief Where a rendered shadow's edges lie against the truth's (see edgePlacement).
+struct EdgePlacement {
+    /// From each true edge pixel to the nearest rendered one: large when an edge is missing or displaced
+    /// (peter-panning, a shrunken or swollen shadow).
+    EdgeDistances trueToRendered;
+    /// From each rendered edge pixel to the nearest true one: large for edges that should not be there
+    /// (speckle lines of acne, leaks).
+    EdgeDistances renderedToTrue;
+};
+
 /// @brief One technique's errors against ground truth over one image (see computeMetrics for definitions).
 struct ShadowMetrics {
     std::size_t receivers = 0;
@@ -33,6 +51,7 @@ struct ShadowMetrics {
     double concaveDarkening = 0.0;
     double meanAbsoluteError = 0.0;
     double rootMeanSquareError = 0.0;
+    EdgePlacement edges;
 };
 
 /// @brief Per-pixel classes: receivers are `receiver[i] != 0`; a receiver is in the band when a receiver with
@@ -47,6 +66,17 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
 /// included).
 ShadowMetrics computeMetrics(std::span<const PixelClass> classes, std::span<const float> truth,
                              std::span<const float> visibility, std::span<const std::uint8_t> concave);
+
+/// @brief Edge pixels of a visibility image: receivers (`classes[i] != Ignored`) below 0.5 with a 4-neighbour
+/// receiver at or above 0.5 (the shadowed side only, so a shadow shifted by k pixels is k pixels away).
+std::vector<std::uint8_t> edgePixels(glm::ivec2 size, std::span<const PixelClass> classes,
+                                     std::span<const float> visibility);
+
+/// @brief Distances from the true edges (`truth`) to the rendered ones (`visibility`) and back, in pixels
+/// (Euclidean, between pixel centres). When one side has edges and the other none, each distance is the
+/// image diagonal; with no edges on the starting side the count, mean and percentile are 0.
+EdgePlacement edgePlacement(glm::ivec2 size, std::span<const PixelClass> classes,
+                            std::span<const float> truth, std::span<const float> visibility);
 
 /// @brief Pixels on concave surfaces, from a G-buffer: the normal turns towards the surface along some screen
 /// axis (d n . d p < -threshold |d p|², outward normals). Needs both neighbours covered.

@@ -11,7 +11,7 @@ GsShadowSample gsShadowSample_Evsm(GsShadowLookup lookup) {
     vec2 exponents = gsShadowTechniqueParameters.xy;
     vec4 moments = texture(gsShadowMap[lookup.slot], lookup.coord);
     float visibility =
-        gsEvsmVisibility(moments, lookup.depth, exponents, gsShadowMinimumVariance, gsShadowBleedingReduction);
+        gsEvsmVisibility(moments, lookup.momentDepth, exponents, gsShadowMinimumVariance, gsShadowBleedingReduction);
     // The shadow-map view shows the filtered depth the positive warp's mean stands for.
     float stored = log(max(moments.x, 1e-30)) / max(exponents.x, 1e-6);
     return gsShadowResult(visibility, stored, lookup);

@@ -16,7 +16,7 @@ GsShadowSample gsShadowSample_Msm(GsShadowLookup lookup) {
 #ifdef GS_SHADOW_MSM_QUANTIZED
     moments = gsMsmDequantize(moments, gsShadowMsmDequantize);
 #endif
-    return gsShadowResult(gsMsmVisibility(moments, lookup.depth, gsShadowMomentBias), moments.x, lookup);
+    return gsShadowResult(gsMsmVisibility(moments, lookup.momentDepth, gsShadowMomentBias), moments.x, lookup);
 }
 #define gsShadowSample gsShadowSample_Msm
 #endif

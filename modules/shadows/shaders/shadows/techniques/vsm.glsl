@@ -8,7 +8,7 @@ vec2 gsShadowStore(float depth) { return vec2(depth, depth * depth); }
 GsShadowSample gsShadowSample_Vsm(GsShadowLookup lookup) {
     vec2 moments = texture(gsShadowMap[lookup.slot], lookup.coord).rg;
     float visibility =
-        gsChebyshevVisibility(moments, lookup.depth, gsShadowMinimumVariance, gsShadowBleedingReduction);
+        gsChebyshevVisibility(moments, lookup.momentDepth, gsShadowMinimumVariance, gsShadowBleedingReduction);
     return gsShadowResult(visibility, moments.x, lookup);
 }
 #define gsShadowSample gsShadowSample_Vsm

@@ -1,0 +1,27 @@
+// adaptive-bias, pcf-adaptive-bias: adaptive depth bias (Dou, Yan, Kerzner, Dai, Wyman, JCGT 3(4), 2014): each
+// comparison at the depth the receiver's tangent plane has on the light's ray through the centre of the texel
+// compared, lowered by the depth bias (depthBiasSteps steps of the format: the paper's epsilon from the depth
+// precision). With the tap pattern, the same for every PCF tap (Ehm et al., WSCG 2015).
+#if defined(GS_SHADOW_ADAPTIVE) || defined(GS_SHADOW_ADAPTIVE_PCF)
+GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
+    int slot = lookup.slot;
+#ifdef GS_SHADOW_ADAPTIVE_PCF
+    mat2 rotation = gsShadowRotation();
+    int count = gsTapCount;
+#else
+    int count = 1;
+#endif
+    float sum = 0.0;
+    for (int i = 0; i < count; ++i) {
+#ifdef GS_SHADOW_ADAPTIVE_PCF
+        vec2 centre = floor(lookup.texel + rotation * gsTapOffsets[i]) + 0.5;
+#else
+        vec2 centre = floor(lookup.texel) + 0.5;
+#endif
+        float reference = lookup.depth + dot(centre - lookup.texel, lookup.tangentGradient);
+        sum += texture(gsShadowMap[slot], vec3(centre * gsShadowTexel[slot].y, gsShadowReference(reference)));
+    }
+    return GsShadowSample(sum / float(max(count, 1)), 1.0, 0.0, lookup.tangentGradient, false);
+}
+#define gsShadowSample gsShadowSample_AdaptiveBias
+#endif
