@@ -83,6 +83,13 @@ for model in knob fzk-haus cylinder-engine suzanne terrain; do
     done
 done
 
+# 7. Defaults: every technique at its defaults on every content scene and real model, under the scene's own light
+#    and a sweep of azimuths x elevations down to 1° above the horizon; accuracy only (the Defaults table).
+views=(knob torus bowl thin-shell crease-cube grazing-plane spheres "${corpus[@]}")
+"$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") --out "$work/defaults-own"
+"$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") \
+    --light-sweep 30,210:40,5,1 --out "$work/defaults-swept"
+
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
 echo "wrote docs/RESULTS.md"

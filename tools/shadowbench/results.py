@@ -400,7 +400,8 @@ def defaults_section(views, real):
 
 model_sections = []
 real_meta = load("real")
-defaults_section(load("defaults"), real_meta)
+own, swept = load("defaults-own"), load("defaults-swept")
+defaults_section({**own, "results": own["results"] + swept["results"]}, real_meta)
 real_models(real_meta, load("scaling"))
 
 results_md.write_text("\n".join(out) + "\n")
