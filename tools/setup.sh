@@ -9,6 +9,7 @@ packages=(
     libglfw3-dev libglm-dev libstb-dev
     libosd-dev libopenmesh-dev libtinygltf-dev libembree-dev
     libgtest-dev libbenchmark-dev libimgui-dev xvfb python3 python3-matplotlib nlohmann-json3-dev
+    doxygen # the API reference and its check of the shadow module (tools/apidocs.sh)
     libopenscenegraph-dev # optional: gs-osgshadow, the osgShadow peer (tools/osgpeer)
     assimp-utils assimp-testmodels # the real-model corpus (tools/corpus.sh)
     nodejs # the Khronos glTF-Validator (tools/gltf-validate), run on every glTF we write; npm below

@@ -84,7 +84,12 @@ std::vector<std::filesystem::path> ModuleLoader::searchPaths() const {
     }
     if (const auto folder = executableFolder(); !folder.empty()) {
         paths.push_back(folder);
-        paths.push_back(folder.parent_path() / "lib");
+        paths.push_back(folder.parent_path() / "lib"); // the build tree's bin/ and lib/
+        // An installed executable's prefix, when its library folder is not lib/ (e.g. lib/x86_64-linux-gnu).
+        if (const auto installed = (folder / GS_MODULE_DIR_FROM_BINDIR).lexically_normal();
+            installed != paths.back().lexically_normal()) {
+            paths.push_back(installed);
+        }
     }
     return paths;
 }

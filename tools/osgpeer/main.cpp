@@ -4,6 +4,7 @@
 #include "OsgScene.h"
 #include "PeerOutputs.h"
 
+#include <cli/ContentFolder.h>
 #include <cli/OptionValues.h>
 #include <content/GltfLoader.h>
 #include <engine/Error.h>
@@ -39,7 +40,7 @@ constexpr const char* kProgram = "gs-osgshadow";
 
 struct Options {
     std::string scene;
-    std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    std::filesystem::path contentFolder = cli::defaultContentFolder();
     std::string technique = "vdsm";
     glm::ivec2 size{640, 480};
     int mapSize = 2048;
@@ -59,7 +60,7 @@ constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PR
   --map-size N     shadow map resolution, 16..16384                [2048]
   --frames N       timed frames per pass, 1..1000                  [20]
   --warmup N       untimed frames before each pass, 0..1000        [5]
-  --content DIR    folder that scene names resolve in              [the repository's content/]
+  --content DIR    folder that scene names resolve in              [installed or source content/]
   --surface S      auto (pbuffer, else window), pbuffer or window  [auto]
   --verbose        pass OpenSceneGraph's warnings through to stderr
   --help           this text

@@ -1,6 +1,7 @@
 // gs-render: renders a scene headless (EGL surfaceless) to PNG and writes a short JSON report.
 #include <content/GltfLoader.h>
 
+#include <cli/ContentFolder.h>
 #include <cli/OptionValues.h>
 #include <engine/Engine.h>
 #include <engine/Error.h>
@@ -27,7 +28,7 @@ namespace {
 
 struct Options {
     std::string scene = "knob";
-    std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    std::filesystem::path contentFolder = cli::defaultContentFolder();
     int subdivisionLevel = -1;
     std::filesystem::path outFolder = "out";
     glm::ivec2 size{1024, 768};
@@ -42,7 +43,7 @@ struct Options {
 
 constexpr const char* kUsage = R"(usage: gs-render [options]
   --scene NAME     content scene (content/scenes/NAME.gltf), corpus scene (corpus/NAME.glb) or a .gltf/.glb path [knob]
-  --content DIR    content folder holding scenes/ and cages/      [the repository's content/]
+  --content DIR    content folder holding scenes/ and cages/      [installed or source content/]
   --level N        subdivision level for every subdivided mesh, 0..6 [each scene's own]
   --out DIR        folder for <scene>.png and report.json         [out]
   --size WxH       image size in pixels, 1..16384 each            [1024x768]

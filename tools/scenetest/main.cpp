@@ -1,6 +1,7 @@
 // gs-scenetest: a shadow-quality check of one scene for a user's own CI. Renders headless, measures the
 // technique's visibility against the ray-traced truth (and optionally the shaded frame against a golden
 // image), writes a short report and the error images, and exits 1 naming every bound that is exceeded.
+#include <cli/ContentFolder.h>
 #include <cli/OptionValues.h>
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
@@ -36,13 +37,13 @@ constexpr const char* kUsage = R"(usage: gs-scenetest SCENE [options]
   --max-failing-fraction F  fraction of pixels allowed beyond --max-diff, 0..1   [0.001]
   --size WxH                image size                                           [640x480]
   --out DIR                 report.txt, classes.png, error.png, shaded.png (and diff.png) [scenetest]
-  --content DIR             content folder for scene names                       [the repository's content/]
+  --content DIR             content folder for scene names                       [installed or source content/]
 exit status: 0 every bound holds; 1 a bound is exceeded (each is named) or the scene cannot be rendered;
 2 bad options)";
 
 struct Options {
     std::string scene;
-    std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    std::filesystem::path contentFolder = cli::defaultContentFolder();
     shadows::ShadowSettings settings;
     std::optional<std::string> technique;
     double maxAcne = 0.05;

@@ -33,7 +33,8 @@ private:
 /// @brief Finds module shared libraries by name (`libgs_module_<name>.so`) and checks their ABI.
 ///
 /// Search order: folders given to addSearchPath, then each folder of $GS_MODULE_PATH (colon-separated),
-/// then the running executable's folder and its `../lib`.
+/// then the running executable's folder, its `../lib` and, for an installed executable, the installed library
+/// folder (found relative to it, so a moved prefix still works).
 class ModuleLoader {
 public:
     ModuleLoader();

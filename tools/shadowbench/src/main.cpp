@@ -3,6 +3,7 @@
 #include <shadowbench/PeerRun.h>
 #include <shadowbench/ShadowBench.h>
 
+#include <cli/ContentFolder.h>
 #include <cli/OptionValues.h>
 
 #include <engine/Error.h>
@@ -39,7 +40,7 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --band TEXELS         boundary band half-width around true shadow edges   [2]
   --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
   --out DIR             where results.csv, results.json and images go       [bench]
-  --content DIR         content folder                                      [the repository's content/]
+  --content DIR         content folder                                      [installed or source content/]
   --peer DIR            add the OpenSceneGraph peer's runs found in DIR/<scene>/<technique>.json and
                         .visibility.pfm (tools/osgpeer; vdsm, sm, lispsm, ssm) as rows "osg-<technique>")";
 
@@ -67,7 +68,7 @@ struct Options {
     std::vector<int> resolutions{1024};
     std::vector<shadows::DepthFormat> formats{shadows::DepthFormat::D24};
     std::vector<shadowbench::BenchConfig> extra;
-    std::filesystem::path contentFolder = GS_CONTENT_DIR;
+    std::filesystem::path contentFolder = cli::defaultContentFolder();
     std::optional<std::filesystem::path> peerFolder;
     /// Empty: each scene's own light only.
     std::vector<engine::LightAngles> lights;

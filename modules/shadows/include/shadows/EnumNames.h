@@ -10,7 +10,9 @@ namespace shadows {
 /// @brief One value of an enum and its stable name in settings files, command lines and docs.
 template <typename Enum>
 struct EnumName {
+    /// The enumerator.
     Enum value;
+    /// Its name, e.g. "pcf-gsm-quadratic".
     std::string_view name;
 };
 

@@ -15,11 +15,14 @@ using Aabb = engine::Aabb;
 
 /// @brief The view and projection a shadow map is rendered with.
 struct LightProjection {
+    /// World → light view space.
     glm::mat4 view{1.0f};
+    /// Light view → clip space (orthographic for directional lights, perspective for spots).
     glm::mat4 projection{1.0f};
     /// World → shadow texture space: xy in [0,1] over the map, z the stored depth in [0,1] (after divide by
     /// w).
     glm::mat4 worldToShadow{1.0f};
+    /// Whether `projection` is perspective (a spot light's).
     bool perspective = false;
     /// Orthographic: world size of one texel. Perspective: 2·tan(fov/2)/resolution (times distance = texel
     /// size).

@@ -36,27 +36,42 @@ struct ShadowStats {
 /// draw.
 class ShadowModule final : public engine::Module {
 public:
+    /// @brief A module with the default ShadowSettings (what a module loaded by name starts with).
     ShadowModule();
+    /// @brief A module with `settings`. Throws std::invalid_argument listing each bad field.
     explicit ShadowModule(const ShadowSettings& settings);
     ~ShadowModule() override;
 
+    /// @brief "shadows", the name it is attached and loaded under.
     [[nodiscard]] std::string_view name() const override { return "shadows"; }
 
     /// @brief Validates and applies `settings`. Throws std::invalid_argument listing each bad field.
     void setSettings(const ShadowSettings& settings);
+    /// @brief The settings in effect (those last given to setSettings).
     [[nodiscard]] const ShadowSettings& settings() const { return settings_; }
     /// @brief What the passes do for the current settings (resolved by setSettings).
     [[nodiscard]] const ShadowPlan& plan() const { return plan_; }
+    /// @brief Shadow maps drawn in the last frame and the memory they hold.
     [[nodiscard]] ShadowStats stats() const;
     /// @brief The projection of the shadow map of engine light `lightIndex` in the last frame, if it has one.
     [[nodiscard]] std::optional<LightProjection> lightProjection(int lightIndex) const;
 
+    /// @brief Registers the module's GLSL files and reserves its texture units.
     void attach(engine::ModuleHost& host) override;
+    /// @brief Releases every GL resource; the module may be attached again.
     void detach() override;
+    /// @brief The visibility code for forward.frag's `declarations` and `light_visibility` slots, and the
+    /// debug views for `final_color`.
     [[nodiscard]] std::vector<engine::ShaderChunk> shaderChunks() const override;
+    /// @brief Fits a projection for each shadow-casting light to the receivers in view, allocates its map
+    /// (again after a settings change) and uploads the shadow uniform block.
     void prepareFrame(const engine::FrameContext& frame) override;
+    /// @brief Draws the shadow maps (and filters moments for the moment techniques).
     void renderPrePasses(const engine::FrameContext& frame) override;
+    /// @brief The technique's lighting variant while this frame has a shadow map, else 0.
     [[nodiscard]] engine::ShaderVariantKey variantBits(const engine::DrawContext& draw) const override;
+    /// @brief Binds the maps, their samplers and the uniform block; sets `program`'s sampler units and tap
+    /// arrays once per program and frame.
     void bindLightingResources(const engine::gl::Program& program, const engine::DrawContext& draw) override;
 
 private:

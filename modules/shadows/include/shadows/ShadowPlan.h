@@ -17,6 +17,7 @@ struct ShadowPlan {
     /// @brief Resolves valid `settings` (ShadowSettings::validate is empty).
     static ShadowPlan resolve(const ShadowSettings& settings);
 
+    /// The technique's row of the technique table.
     const ShadowTechniqueTraits* traits = nullptr;
     /// How the lighting pass samples the map (the receiver-plane per-tap kernel compares in hardware).
     MapSampler sampler = MapSampler::CompareNearest;
@@ -29,11 +30,13 @@ struct ShadowPlan {
 
     /// Depth buffer format of the map.
     GLenum depthFormat = GL_DEPTH_COMPONENT24;
+    /// Bytes of one depth texel (memory accounting, ShadowStats::bytes).
     std::size_t depthBytesPerTexel = 4;
     /// The dz/dxy target of stored derivatives (RG32F), when a technique reads them.
     bool storesGradient = false;
     /// Format of the filtered moments target (blurred, mipmapped), 0 when the technique stores none.
     GLenum momentsFormat = 0;
+    /// Bytes of one moments texel at mip level 0.
     std::size_t momentBytesPerTexel = 0;
     /// What empty moments texels hold: the far plane's moments in the stored basis.
     glm::vec4 momentsClear{1.0f};

@@ -57,36 +57,66 @@ enum class ShadowDebugView {
 /// here; what each field means, its unit, range and when it applies are in the one schema
 /// (shadows::settingsSchema(), generated into the settings table of docs/SHADOWS.md).
 struct ShadowSettings {
+    /// Visibility function.
     ShadowTechnique technique = ShadowTechnique::PcfGsmAverageGradient;
+    /// Width and height of each shadow map, texels.
     int resolution = 2048;
+    /// Depth format of the shadow maps.
     DepthFormat depthFormat = DepthFormat::D24;
+    /// Faces drawn into the shadow map.
     CasterFaces casterFaces = CasterFaces::Both;
+    /// Receiver moved towards the light before comparing, shadow texel sizes at the receiver.
     float constantBiasTexels = 0.0f;
+    /// Comparison depth lowered by this many depth steps (depthBiasStep).
     float depthBiasSteps = 4.0f;
+    /// glPolygonOffset factor on the casters (SlopeScaledBias).
     float slopeScale = 1.5f;
+    /// glPolygonOffset units on the casters (SlopeScaledBias).
     float slopeUnits = 2.0f;
+    /// Layout of the PCF taps.
     TapLayout pcfLayout = TapLayout::Grid;
+    /// Taps per side of a grid, or the number of Poisson taps.
     int pcfTaps = 4;
+    /// Radius of the tap pattern (and of jittered offsets), texels.
     float pcfRadius = 1.5f;
+    /// Rotates the pattern per pixel: noise instead of banding.
     bool pcfRotate = false;
+    /// Where the fragment's depth gradient comes from.
     GradientSource gradientSource = GradientSource::CentralDifferences;
+    /// Width of the GSM fuzzy comparison band, texels.
     float fuzzyScale = 1.0f;
+    /// Form of the average-gradient solve.
     AverageGradientForm averageGradientForm = AverageGradientForm::LeastSquares;
+    /// Kernel of the receiver-plane bias.
     ReceiverPlaneKernel receiverPlaneKernel = ReceiverPlaneKernel::Bilinear2x2;
+    /// Clamps the receiver-plane bias to min(0, bias).
     bool receiverPlaneClamp = true;
+    /// Margin beyond the kernel's footprint of the normal offset, texel sizes.
     float normalOffsetTexels = 1.0f;
+    /// Floors the receiver depth to the format's step before comparing.
     bool floorReceiverDepth = false;
+    /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
+    /// Half-width of the moments' separable box blur, texels.
     int momentBlurRadius = 2;
+    /// Smallest variance the Chebyshev bound uses.
     float vsmMinimumVariance = 1e-6f;
+    /// Tail of the Chebyshev bound cut off (linstep).
     float lightBleedingReduction = 0.2f;
-    // The reference's blog uses 9e-3, which hides more numerical trouble at the cost of light leaking.
+    /// Bias of the moments towards (0, 0.63, 0, 0.63) (Msm). The reference's blog uses 9e-3, which hides more
+    /// numerical trouble at the cost of light leaking.
     float msmMomentBias = 3e-5f;
+    /// Stores moments as 16-bit unorm via the optimised basis (Msm).
     bool msmQuantize16 = false;
+    /// c+ of the warp exp(c+ d) (Evsm).
     float evsmPositiveExponent = 40.0f;
+    /// c- of the warp -exp(-c- d) (Evsm).
     float evsmNegativeExponent = 5.0f;
+    /// Stratified taps per pixel (PcfJittered).
     int jitterTaps = 32;
+    /// Taps taken before deciding on the full kernel; 0: always full (PcfJittered).
     int earlyOutTestTaps = 8;
+    /// What the lighting pass shows instead of the shaded colour.
     ShadowDebugView debugView = ShadowDebugView::None;
 
     /// @brief Empty when the settings are usable, otherwise one line per problem naming the field.
@@ -94,6 +124,7 @@ struct ShadowSettings {
     /// @brief The tap pattern these settings select (Circular8 forms force the Circular8 layout).
     [[nodiscard]] TapPattern tapPattern() const;
 
+    /// @brief Field-wise equality.
     bool operator==(const ShadowSettings&) const = default;
 };
 

@@ -15,19 +15,27 @@ namespace shadows {
 /// @brief The values a float setting accepts: finite, at least `min` (above it when `minExclusive`), at most
 /// `max`.
 struct FloatLimits {
+    /// Lowest value accepted (excluded when `minExclusive`).
     float min = 0.0f;
+    /// Highest value accepted.
     float max = std::numeric_limits<float>::infinity();
+    /// Whether `min` itself is refused (the setting must be positive).
     bool minExclusive = false;
 
+    /// @brief Whether `value` is finite and within the limits.
     [[nodiscard]] bool contains(float value) const;
 };
 
 /// @brief A float setting; the slider range is what the sandbox offers, narrower than `valid` where the
 /// valid range is unbounded or mostly useless.
 struct FloatSetting {
+    /// The ShadowSettings field.
     float ShadowSettings::*member;
+    /// The values validation accepts.
     FloatLimits valid;
+    /// Lower end of the sandbox's slider.
     float sliderMin;
+    /// Upper end of the sandbox's slider.
     float sliderMax;
     /// printf format of the slider's value.
     const char* format;
@@ -38,14 +46,20 @@ struct FloatSetting {
 /// @brief The values an integer setting accepts: `min`, `min + step`, ... up to `max`, and 0 when
 /// `zeroAllowed`. `powersOfTwo` narrows what the sandbox offers (every value stays valid).
 struct IntLimits {
+    /// Lowest value accepted, besides 0 when `zeroAllowed`.
     int min;
+    /// Highest value accepted.
     int max;
+    /// Accepted values are `min` plus multiples of `step`.
     int step = 1;
+    /// Whether 0 is accepted too (it switches the feature off).
     bool zeroAllowed = false;
+    /// Whether the sandbox offers only powers of two.
     bool powersOfTwo = false;
     /// Says which case of a setting-dependent range applies, e.g. "for a grid".
     std::string_view qualifier = {};
 
+    /// @brief Whether `value` is one of the accepted values.
     [[nodiscard]] bool contains(int value) const;
     /// @brief The values the sandbox offers, ascending.
     [[nodiscard]] std::vector<int> offered() const;
@@ -56,18 +70,25 @@ struct IntLimits {
 /// @brief An integer setting; its limits may depend on the other settings (pcfTaps on the layout), and an
 /// empty result means any value is accepted (the setting is ignored there).
 struct IntSetting {
+    /// The ShadowSettings field.
     int ShadowSettings::*member;
+    /// The accepted values given the other settings, or nullopt where any value is accepted.
     std::optional<IntLimits> (*limits)(const ShadowSettings&);
 };
 
+/// @brief A true/false setting; every value is valid.
 struct BoolSetting {
+    /// The ShadowSettings field.
     bool ShadowSettings::*member;
 };
 
 /// @brief An enum setting, read and written through its index in the enum's name table.
 struct EnumSetting {
+    /// The enum's names in declaration order (its name table).
     std::vector<std::string_view> names;
+    /// The index of the field's value in `names`.
     int (*get)(const ShadowSettings&);
+    /// Sets the field to the value at index `names[i]`.
     void (*set)(ShadowSettings&, int);
 
     /// @brief "grid, poisson, circular8".
@@ -85,6 +106,7 @@ struct SettingRow {
     std::string_view label;
     /// What the field does, one sentence.
     std::string_view help;
+    /// The field's type, with its member pointer (or accessors) and accepted values.
     std::variant<FloatSetting, IntSetting, BoolSetting, EnumSetting> field;
     /// Whether the field changes anything for these settings (their technique's needs and options).
     bool (*applies)(const ShadowSettings&);

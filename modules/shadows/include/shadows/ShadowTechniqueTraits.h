@@ -59,6 +59,7 @@ struct MomentStore {
 /// @brief What a technique needs, whatever its options: one row per technique (techniqueTable()).
 /// ShadowPlan resolves a row and the settings into what the passes do.
 struct ShadowTechniqueTraits {
+    /// The technique this row describes.
     ShadowTechnique technique;
     /// Stable name for CLIs and files.
     std::string_view name;
@@ -66,6 +67,7 @@ struct ShadowTechniqueTraits {
     std::string_view summary;
     /// Where it comes from, for the same tables; empty where nothing is cited.
     std::string_view reference = {};
+    /// How the lighting pass samples the depth map (ShadowPlan may override it for an option).
     MapSampler sampler = MapSampler::CompareNearest;
     /// Lighting-pass defines (besides GS_SHADOWS) that select the technique's function
     /// gsShadowSample_<Technique> in shaders/shadows/techniques/: its family's, and the technique's own where

@@ -19,8 +19,10 @@ enum class TapLayout {
 
 /// @brief A PCF tap pattern plus what the least-squares fits over it need, precomputed on the CPU.
 struct TapPattern {
+    /// Most taps a pattern has; the shaders' arrays are this long.
     static constexpr int kMaxTaps = 64;
 
+    /// The layout the offsets follow.
     TapLayout layout = TapLayout::Grid;
     /// Offsets in texels, in the pattern's own frame.
     std::vector<glm::vec2> offsets;
@@ -48,7 +50,9 @@ namespace shadows {
 /// @brief Offsets of jittered PCF, stored as the soft shadows reference does: a size x size x pairs texture
 /// whose RGBA texels hold two offsets (rg, ba) in [0,1] (offset = 2·value − 1, times the radius).
 struct JitterTexels {
+    /// Width and height of the tile, pixels.
     int size = 32;
+    /// Texels per pixel (depth of the texture): two taps each.
     int pairs = 0;
     /// size·size·pairs texels, x fastest, then y, then pair; 16-bit unorm components.
     std::vector<glm::u16vec4> texels;

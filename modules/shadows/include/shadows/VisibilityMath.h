@@ -16,6 +16,7 @@ namespace {
 
 using namespace glm;
 
+/// GLSL's `out T` parameters become references.
 #define GS_OUT(T) T&
 #include "../../shaders/shadows/visibility.glsl"
 #undef GS_OUT

@@ -10,12 +10,17 @@
 namespace shadows::glsl_double {
 
 using namespace glm;
+/// @{
+/// @brief GLSL's vector and matrix types, in double precision.
 using vec2 = glm::dvec2;
 using vec3 = glm::dvec3;
 using vec4 = glm::dvec4;
 using mat2 = glm::dmat2;
 using mat4 = glm::dmat4;
+/// @}
 
+/// @{
+/// @brief The built-in (or operator) for a float literal of the GLSL meeting a double: computed in double.
 inline double clamp(double x, float low, float high) {
     return glm::clamp(x, double(low), double(high));
 }
@@ -48,13 +53,16 @@ template <int N>
 glm::vec<N, double> operator*(float s, const glm::vec<N, double>& v) {
     return double(s) * v;
 }
+/// @}
 
 // Internal linkage, as in VisibilityMath.h.
 namespace {
 // A translation unit uses only some of the shader's functions, like a shader variant does.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
+/// GLSL's `out T` parameters become references.
 #define GS_OUT(T) T&
+/// Every float of the GLSL becomes double.
 #define float double
 #include "../../shaders/shadows/visibility.glsl"
 #undef float
