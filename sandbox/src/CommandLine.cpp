@@ -4,6 +4,7 @@
 
 #include "ParameterTable.h"
 #include "SandboxError.h"
+#include "SoakRun.h"
 
 #include <shadows/ShadowSettingsSchema.h>
 
@@ -29,8 +30,8 @@ Explore shadow techniques side by side: a window with controls, or --headless to
                     windowed: close after N frames [run until closed]
   --out FILE        headless: PNG to write                                           [sandbox.png]
   --ground-truth F  headless: measure both sides against ray-traced truth, write the acne/leak overlay to F
-  --soak N          headless: N cycles (2..100000) of every scene x technique x light type, one frame each;
-                    checks that RSS and live GL objects stay flat after the first cycle and that GL reports
+  --soak N          headless: N cycles (3..100000) of every scene x technique x light type, one frame each;
+                    checks that RSS and live GL objects stay flat after two cycles of warm-up and that GL reports
                     no error; exit 1 otherwise (no image written)
   --soak-scenes S   headless soak: all, content (content/scenes only) or NAME,NAME,...       [all]
   --screenshot FILE windowed: PNG for F12/the button, written after the last --frames frame too
@@ -148,7 +149,7 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
             headlessOnly = option;
             imageOption = option;
         } else if (option == "--soak") {
-            line.soakCycles = parseInt(option, value(), 2, 100000);
+            line.soakCycles = parseInt(option, value(), kSoakWarmUpCycles + 1, 100000);
             headlessOnly = option;
         } else if (option == "--soak-scenes") {
             soakScenes = value();

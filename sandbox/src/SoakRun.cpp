@@ -83,7 +83,7 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
     out << "soak: " << *line.soakCycles << " cycles of " << line.soakScenes.size() << " scenes x "
         << techniques.size() << " techniques x " << kSoakLightTypes.size()
         << " light types = " << framesPerCycle << " frames each, " << line.size.x << "x" << line.size.y
-        << "; the first cycle is the warm-up" << std::endl;
+        << "; the first " << kSoakWarmUpCycles << " cycles are the warm-up" << std::endl;
 
     Session session(catalog, line.settings);
     engine::RenderTarget target(line.size);
@@ -122,10 +122,13 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
         sample.rssMiB = residentMiB();
         sample.glObjects = engine::gl::liveObjectCounts();
         sample.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        out << "soak cycle " << cycle << "/" << *line.soakCycles << (cycle == 1 ? " (warm-up)" : "") << ": "
-            << frames << " frames, RSS " << fixed(sample.rssMiB, 1) << " MiB, live GL objects "
-            << describe(sample.glObjects) << ", " << fixed(sample.seconds, 1) << " s" << std::endl;
-        samples.push_back(sample);
+        out << "soak cycle " << cycle << "/" << *line.soakCycles
+            << (cycle <= kSoakWarmUpCycles ? " (warm-up)" : "") << ": " << frames << " frames, RSS "
+            << fixed(sample.rssMiB, 1) << " MiB, live GL objects " << describe(sample.glObjects) << ", "
+            << fixed(sample.seconds, 1) << " s" << std::endl;
+        if (cycle >= kSoakWarmUpCycles) {
+            samples.push_back(sample);
+        }
     }
     const SoakVerdict verdict = judgeSoak(samples, glErrors, kSoakRssToleranceMiB);
     out << "soak: " << frames << " frames; after warm-up RSS grew " << fixed(verdict.rssGrowthMiB, 1)

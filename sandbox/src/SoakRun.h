@@ -17,6 +17,11 @@ namespace sandbox {
 /// @brief Light types the soak run gives each scene's first light. Add new engine::LightType values here.
 inline constexpr std::array kSoakLightTypes{engine::LightType::Directional, engine::LightType::Spot};
 
+/// @brief Cycles of warm-up before the soak's baseline sample: the first compiles programs and fills caches;
+/// in the second the driver's and the allocator's caches still settle (a 64x48 run over the corpus grew 26
+/// MiB from the first cycle to the second, then 0.4 MiB over six more; docs/ROBUSTNESS.md).
+inline constexpr int kSoakWarmUpCycles = 2;
+
 /// @brief Process RSS growth after warm-up that still counts as flat, MiB: allocator and driver caches move
 /// by a few MiB from one cycle to the next (docs/ROBUSTNESS.md has the measured spread).
 inline constexpr double kSoakRssToleranceMiB = 8.0;
@@ -30,7 +35,8 @@ struct SoakSample {
     double seconds = 0.0;
 };
 
-/// @brief Whether the samples are flat after warm-up (the first sample is the baseline): RSS at most
+/// @brief Whether the samples are flat after warm-up (the first sample, the last warm-up cycle's, is the
+/// baseline): RSS at most
 /// `rssToleranceMiB` above the baseline, the live GL objects equal to it, no GL error.
 struct SoakVerdict {
     double rssGrowthMiB = 0.0;

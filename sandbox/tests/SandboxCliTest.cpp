@@ -102,11 +102,11 @@ TEST(SandboxCliTest, GroundTruthMeasuresSideBToo) {
 }
 
 TEST(SandboxCliTest, SoakRefusesImageOptionsAndUnknownScenes) {
-    expectFailure("--headless --soak 2 --out x.png", 2, "--out does not apply to --soak");
-    expectFailure("--headless --soak 2 --soak-scenes knob,nope", 2, "--soak-scenes: unknown scene 'nope'");
+    expectFailure("--headless --soak 3 --out x.png", 2, "--out does not apply to --soak");
+    expectFailure("--headless --soak 3 --soak-scenes knob,nope", 2, "--soak-scenes: unknown scene 'nope'");
     expectFailure("--headless --soak-scenes knob", 2, "--soak-scenes applies to --soak only");
-    expectFailure("--headless --soak 1", 2, "--soak: '1' is not an integer in [2, 100000]");
-    expectFailure("--soak 2", 2, "--soak applies to --headless only");
+    expectFailure("--headless --soak 2", 2, "--soak: '2' is not an integer in [3, 100000]");
+    expectFailure("--soak 3", 2, "--soak applies to --headless only");
 }
 
 TEST(SandboxCliTest, UnknownTechniqueExits2) {
