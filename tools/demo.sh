@@ -1,26 +1,53 @@
 #!/usr/bin/env bash
-# The main job: renders the default scene (knob) headless with every shadow technique, every content scene and
-# every real model of the corpus (tools/corpus.sh) with the default technique, into out/ (or $1), then writes
-# out/report.md summarising what was rendered.
+# The main job: measures every shadow technique on the default scene (knob) against the ray-traced truth and
+# sets them side by side on labelled sheets (out/contact-sheet.png, out/truth-sheet.png), then renders knob with
+# every technique, every content scene and every real model of the corpus (tools/corpus.sh) headless into out/
+# (or $1), and writes out/report.md: the accuracy table, then the frame times. Prints a line per step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out}
+started=${EPOCHREALTIME/./}
 bash tools/setup.sh
 cmake --preset default >/dev/null
-cmake --build --preset default --target gs-render gs-corpus
+cmake --build --preset default --target gs-render gs-corpus gs-shadowbench gs-contactsheet
+bash tools/corpus.sh
+mkdir -p "$out"
+
+# Seconds since microsecond timestamp $1, one decimal.
+seconds_since() { local us=$((${EPOCHREALTIME/./} - $1)); printf '%d.%d' $((us / 1000000)) $((us % 1000000 / 100000)); }
+
+echo "demo: every technique on knob against the ray-traced truth (gs-shadowbench, 640x480)"
+./build/bin/gs-shadowbench --scene knob --frames 3 --out "$out/accuracy"
+./build/bin/gs-contactsheet "$out/accuracy" --downsample 2 --out "$out"
+
 render=./build/bin/gs-render
 mapfile -t techniques < <("$render" --list-techniques)
-for technique in "${techniques[@]}"; do
-    "$render" --scene knob --technique "$technique" --out "$out/knob/$technique"
-done
-for scene in torus bowl thin-shell crease-cube grazing-plane spheres; do
-    "$render" --scene "$scene" --out "$out/scenes/$scene"
-done
-bash tools/corpus.sh
+scenes=(torus bowl thin-shell crease-cube grazing-plane spheres)
 shopt -s nullglob # no corpus (assimp missing): nothing to render
-for model in corpus/*.glb; do
+models=(corpus/*.glb)
+steps=$((${#techniques[@]} + ${#scenes[@]} + ${#models[@]}))
+step=0
+# render_step LABEL gs-render-options...: one image, its report.json and a progress line; gs-render's own lines go
+# to out/render.log.
+render_step() {
+    local label=$1 begun=${EPOCHREALTIME/./}
+    shift
+    step=$((step + 1))
+    "$render" "$@" >> "$out/render.log"
+    echo "[$step/$steps] $label $(seconds_since "$begun") s"
+}
+echo "demo: frame times ($steps images, gs-render)"
+: > "$out/render.log"
+for technique in "${techniques[@]}"; do
+    render_step "knob $technique" --scene knob --technique "$technique" --out "$out/knob/$technique"
+done
+for scene in "${scenes[@]}"; do
+    render_step "$scene" --scene "$scene" --out "$out/scenes/$scene"
+done
+for model in "${models[@]}"; do
     name=$(basename "$model" .glb)
-    "$render" --scene "$name" --size 640x480 --out "$out/corpus/$name"
+    render_step "$name" --scene "$name" --size 640x480 --out "$out/corpus/$name"
 done
 python3 tools/demo_report.py "$out" > "$out/report.md.tmp" && mv "$out/report.md.tmp" "$out/report.md"
 cat "$out/report.md"
+echo "demo: wrote $out/report.md, $out/contact-sheet.png and $out/truth-sheet.png in $(seconds_since "$started") s"

@@ -7,6 +7,7 @@ packages=(
     cmake ninja-build g++ pkg-config
     libepoxy-dev libegl1 libegl-mesa0 libgl1-mesa-dri
     libglfw3-dev libglm-dev libstb-dev
+    fonts-dejavu-core # the labels of the demo's sheets (gs-contactsheet)
     libosd-dev libopenmesh-dev libtinygltf-dev libembree-dev
     libgtest-dev libbenchmark-dev libimgui-dev xvfb python3 python3-matplotlib nlohmann-json3-dev
     doxygen # the API reference and its check of the shadow module (tools/apidocs.sh)

@@ -48,7 +48,7 @@ ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& prog
 }
 
 void ForwardRenderer::releaseUnreferencedMeshes() {
-    std::erase_if(meshes_, [](const auto& entry) { return entry.second.mesh.use_count() == 1; });
+    std::erase_if(meshes_, [](const auto& entry) { return entry.second.mesh.expired(); });
 }
 
 FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
@@ -115,21 +115,27 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
 
 ForwardRenderer::CachedMesh& ForwardRenderer::cached(const std::shared_ptr<const MeshData>& mesh) {
     auto found = meshes_.find(mesh.get());
-    if (found != meshes_.end()) {
+    // Same address, other owner: the cached mesh died and a new one took its place before a release.
+    const bool sameMesh = found != meshes_.end() && !found->second.mesh.owner_before(mesh) &&
+                          !mesh.owner_before(found->second.mesh);
+    if (sameMesh) {
         return found->second;
     }
     CachedMesh entry{mesh, {}, std::nullopt};
     for (const glm::vec3& p : mesh->positions) {
         entry.bounds.extend(p);
     }
+    if (found != meshes_.end()) {
+        found->second = std::move(entry);
+        return found->second;
+    }
     return meshes_.emplace(mesh.get(), std::move(entry)).first->second;
 }
 
-const ForwardRenderer::GpuMesh& ForwardRenderer::upload(CachedMesh& entry) {
+const ForwardRenderer::GpuMesh& ForwardRenderer::upload(CachedMesh& entry, const MeshData& mesh) {
     if (entry.gpu) {
         return *entry.gpu;
     }
-    const MeshData& mesh = *entry.mesh;
     const ChunkedMesh chunked = splitIntoChunks(mesh, chunkLimits);
     const bool hasNormals = mesh.normals.size() == mesh.positions.size();
     std::vector<Vertex> vertices(chunked.sourceVertex.size());
@@ -176,7 +182,7 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
             return;
         }
         const glm::mat4 model = scene.worldMatrix(id);
-        const GpuMesh& gpu = upload(cached(entity.mesh->mesh));
+        const GpuMesh& gpu = upload(cached(entity.mesh->mesh), *entity.mesh->mesh);
         const glm::mat4 clipFromModel = cullViewProjection * model;
         visible.clear();
         for (const MeshChunk& chunk : gpu.chunks) {

@@ -2,6 +2,7 @@
 #include <engine/Error.h>
 #include <engine/Image.h>
 
+#include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
 #include <fstream>
@@ -23,6 +24,21 @@ void writePng(const std::filesystem::path& path, const Image& image) {
         return stbi_write_png(temporary.c_str(), image.size.x, image.size.y, 4, image.pixels.data(),
                               image.size.x * 4) != 0;
     });
+}
+
+Image readPng(const std::filesystem::path& path) {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &width, &height, &channels, 4);
+    if (!data) {
+        throw IoError(path.string() + ": cannot read the image (" + stbi_failure_reason() + ")");
+    }
+    Image image;
+    image.size = {width, height};
+    image.pixels.assign(data, data + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    stbi_image_free(data);
+    return image;
 }
 
 void writeTextFile(const std::filesystem::path& path, std::string_view text) {

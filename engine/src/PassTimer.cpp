@@ -20,10 +20,14 @@ void PassTimer::begin() {
         start_ = std::chrono::steady_clock::now();
         return;
     }
-    if (queries_[0] == 0) {
-        glCreateQueries(GL_TIMESTAMP, 2, queries_);
+    if (!queries_[0]) {
+        for (auto& query : queries_) {
+            GLuint name = 0;
+            glCreateQueries(GL_TIMESTAMP, 1, &name);
+            query = gl::GlObject<gl::detail::deleteQuery>(name);
+        }
     }
-    glQueryCounter(queries_[0], GL_TIMESTAMP);
+    glQueryCounter(queries_[0].id(), GL_TIMESTAMP);
 }
 
 double PassTimer::end() {
@@ -31,11 +35,11 @@ double PassTimer::end() {
         glFinish();
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
     }
-    glQueryCounter(queries_[1], GL_TIMESTAMP);
+    glQueryCounter(queries_[1].id(), GL_TIMESTAMP);
     GLuint64 start = 0;
     GLuint64 stop = 0;
-    glGetQueryObjectui64v(queries_[0], GL_QUERY_RESULT, &start);
-    glGetQueryObjectui64v(queries_[1], GL_QUERY_RESULT, &stop);
+    glGetQueryObjectui64v(queries_[0].id(), GL_QUERY_RESULT, &start);
+    glGetQueryObjectui64v(queries_[1].id(), GL_QUERY_RESULT, &stop);
     return static_cast<double>(stop - start) * 1e-6;
 }
 

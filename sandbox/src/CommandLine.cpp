@@ -4,9 +4,11 @@
 
 #include "ParameterTable.h"
 #include "SandboxError.h"
+#include "SoakRun.h"
 
 #include <shadows/ShadowSettingsSchema.h>
 
+#include <algorithm>
 #include <string>
 
 namespace sandbox {
@@ -27,7 +29,11 @@ Explore shadow techniques side by side: a window with controls, or --headless to
   --frames N        headless: frames to render, the last is written [1];
                     windowed: close after N frames [run until closed]
   --out FILE        headless: PNG to write                                           [sandbox.png]
-  --ground-truth F  headless: measure side A against ray-traced truth, write the acne/leak overlay to F
+  --ground-truth F  headless: measure both sides against ray-traced truth, write the acne/leak overlay to F
+  --soak N          headless: N cycles (3..100000) of every scene x technique x light type, one frame each;
+                    checks that RSS and live GL objects stay flat after two cycles of warm-up and that GL reports
+                    no error; exit 1 otherwise (no image written)
+  --soak-scenes S   headless soak: all, content (content/scenes only) or NAME,NAME,...       [all]
   --screenshot FILE windowed: PNG for F12/the button, written after the last --frames frame too
                                                                                       [sandbox-screenshot.png]
   --no-ui           windowed: start with the panels hidden (F1 shows them)
@@ -51,6 +57,30 @@ shadows::ShadowTechnique parseTechnique(const std::string& option, const std::st
                            shadows::nameList<shadows::ShadowTechnique>() + ")");
     }
     return *technique;
+}
+
+/// The scenes `--soak-scenes` names: all, content, or a comma-separated list checked against `catalog`.
+std::vector<std::string> soakSceneList(const std::string& text, const SceneCatalog& catalog) {
+    if (text == "all") {
+        return catalog.names();
+    }
+    if (text == "content") {
+        return catalog.contentNames();
+    }
+    std::vector<std::string> scenes;
+    std::string::size_type begin = 0;
+    while (begin <= text.size()) {
+        const auto comma = std::min(text.find(',', begin), text.size());
+        const std::string scene = text.substr(begin, comma - begin);
+        try {
+            (void)catalog.resolve(scene);
+        } catch (const SandboxError& error) {
+            throw SandboxError(std::string("--soak-scenes: ") + error.what());
+        }
+        scenes.push_back(scene);
+        begin = comma + 1;
+    }
+    return scenes;
 }
 
 } // namespace
@@ -78,6 +108,8 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
     std::optional<int> shadowSize;
     std::optional<std::string> windowOnly;
     std::optional<std::string> headlessOnly;
+    std::optional<std::string> soakScenes;
+    std::optional<std::string> imageOption;
     for (std::size_t i = 0; i < arguments.size(); ++i) {
         const std::string option(arguments[i]);
         auto value = [&]() -> std::string {
@@ -111,12 +143,21 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
             }
         } else if (option == "--frames") {
             line.frames = parseInt(option, value(), 1, 1000000);
+            imageOption = option;
         } else if (option == "--out") {
             line.out = value();
+            headlessOnly = option;
+            imageOption = option;
+        } else if (option == "--soak") {
+            line.soakCycles = parseInt(option, value(), kSoakWarmUpCycles + 1, 100000);
+            headlessOnly = option;
+        } else if (option == "--soak-scenes") {
+            soakScenes = value();
             headlessOnly = option;
         } else if (option == "--ground-truth") {
             line.groundTruth = value();
             headlessOnly = option;
+            imageOption = option;
         } else if (option == "--screenshot") {
             line.screenshot = value();
             windowOnly = option;
@@ -136,6 +177,17 @@ CommandLine CommandLine::parse(std::span<const std::string_view> arguments, cons
     }
     if (!line.headless && headlessOnly) {
         throw SandboxError(*headlessOnly + " applies to --headless only (the window writes --screenshot)");
+    }
+
+    if (line.soakCycles && imageOption) {
+        throw SandboxError(*imageOption +
+                           " does not apply to --soak (which renders many views and writes none)");
+    }
+    if (soakScenes && !line.soakCycles) {
+        throw SandboxError("--soak-scenes applies to --soak only");
+    }
+    if (line.soakCycles) {
+        line.soakScenes = soakSceneList(soakScenes.value_or("all"), catalog);
     }
 
     std::string sceneSource = "--scene";

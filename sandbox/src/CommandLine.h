@@ -8,7 +8,9 @@
 #include <filesystem>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace sandbox {
 
@@ -33,6 +35,11 @@ struct CommandLine {
     /// Frames to render: headless renders this many and writes the last (default 1); the window closes
     /// after this many (default: when closed).
     std::optional<int> frames;
+    /// Headless: soak instead of one view, this many cycles over every scene × technique × light type
+    /// (SoakRun.h).
+    std::optional<int> soakCycles;
+    /// Headless soak: the scenes it cycles through (every scene of the catalog unless --soak-scenes).
+    std::vector<std::string> soakScenes;
     /// Windowed: show the panels at start (F1 toggles).
     bool showUi = true;
 

@@ -149,7 +149,7 @@ bool ControlPanel::draw(Session& session) {
             ImGui::SameLine();
             // Ray casting the view takes a moment: on demand only; the tint stays while the view is
             // unchanged.
-            groundTruthRequested_ = ImGui::Button("Ground truth (A)") || groundTruthRequested_;
+            groundTruthRequested_ = ImGui::Button("Ground truth") || groundTruthRequested_;
         }
         if (!status_.empty()) {
             ImGui::PushTextWrapPos(0.0f);

@@ -33,7 +33,7 @@ public:
     [[nodiscard]] std::filesystem::path screenshotPath() const { return screenshotPath_; }
     /// @brief Shows `message` under the panel (red when `error`).
     void setStatus(std::string message, bool error);
-    /// @brief True once after the "Ground truth (A)" button was pressed.
+    /// @brief True once after the "Ground truth" button was pressed.
     bool takeGroundTruthRequest() { return std::exchange(groundTruthRequested_, false); }
 
 private:

@@ -2,6 +2,7 @@
 
 #include "GroundTruthOverlay.h"
 #include "Session.h"
+#include "SoakRun.h"
 
 #include <engine/HeadlessContext.h>
 #include <engine/Image.h>
@@ -27,6 +28,9 @@ HeadlessApp::HeadlessApp(CommandLine line, SceneCatalog catalog)
 
 int HeadlessApp::run() {
     engine::HeadlessContext context;
+    if (line_.soakCycles) {
+        return runSoak(line_, catalog_, std::cout);
+    }
     Session session(catalog_, line_.settings);
     for (const std::string& warning : session.scene().warnings()) {
         std::cerr << "gs-sandbox: warning: " << warning << "\n";
@@ -54,8 +58,11 @@ int HeadlessApp::run() {
     if (line_.groundTruth) {
         const GroundTruthView truth = measureGroundTruth(session, image);
         engine::writePng(*line_.groundTruth, truth.overlay);
-        std::cout << "  ground truth (A): " << truth.summary() << "; overlay " << line_.groundTruth->string()
-                  << "\n";
+        std::cout << "  ground truth (A): " << GroundTruthView::summary(truth.a) << "\n";
+        if (truth.b) {
+            std::cout << "  ground truth (B): " << GroundTruthView::summary(*truth.b) << "\n";
+        }
+        std::cout << "  overlay " << line_.groundTruth->string() << "\n";
     }
     return 0;
 }

@@ -12,7 +12,8 @@ public:
     HeadlessApp(CommandLine line, SceneCatalog catalog);
 
     /// @brief Renders --frames frames, writes the last to --out and prints what it wrote with the passes'
-    /// timings. Returns the exit status; throws engine::Error (context, content, I/O) for the caller to
+    /// timings (and both sides' ground-truth metrics with --ground-truth); with --soak, runs the soak instead
+    /// (runSoak). Returns the exit status; throws engine::Error (context, content, I/O) for the caller to
     /// report.
     int run();
 

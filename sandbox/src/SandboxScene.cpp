@@ -49,7 +49,8 @@ SandboxScene::SandboxScene(const std::filesystem::path& path, int level)
     });
     const bool hasMeshes = low.x <= high.x;
     centre_ = hasMeshes ? (low + high) * 0.5f : glm::vec3(0.0f);
-    const float radius = hasMeshes ? std::max(glm::length(high - low) * 0.5f, 0.01f) : 1.0f;
+    radius_ = hasMeshes ? std::max(glm::length(high - low) * 0.5f, 0.01f) : 1.0f;
+    const float radius = radius_;
 
     if (const auto camera = scene.firstCamera()) {
         camera_ = *camera;
@@ -74,6 +75,7 @@ SandboxScene::SandboxScene(const std::filesystem::path& path, int level)
     }
     fileCamera_ = scene.entity(camera_).transform;
     fileLight_ = scene.entity(light_).transform;
+    fileLightComponent_ = *scene.entity(light_).light;
 
     const glm::mat4 lightWorld = scene.worldMatrix(light_);
     const glm::vec3 lightPosition = position(lightWorld);
@@ -125,6 +127,24 @@ void SandboxScene::apply(const std::optional<SandboxSettings::LightAngles>& ligh
     } else {
         scene.entity(camera_).transform = fileCamera_;
     }
+}
+
+void SandboxScene::setLightType(engine::LightType type) {
+    engine::LightComponent light = fileLightComponent_;
+    if (type != light.type) {
+        light.type = type;
+        if (type == engine::LightType::Spot) {
+            // A cone around the meshes' bounding sphere seen from the light's orbit distance, 10 % to spare,
+            // and at most 75° so the shadow map's perspective stays well conditioned.
+            light.outerConeAngle = std::min(1.1f * std::atan(radius_ / lightDistance_), glm::radians(75.0f));
+            light.innerConeAngle = 0.8f * light.outerConeAngle;
+            light.range = 0.0f;
+            light.intensity = fileLightComponent_.intensity * lightDistance_ * lightDistance_;
+        } else {
+            light.intensity = fileLightComponent_.intensity / (lightDistance_ * lightDistance_);
+        }
+    }
+    *loaded_.scene.entity(light_).light = light;
 }
 
 void SandboxScene::setWorldTransform(engine::EntityId id, const engine::Transform& world) {

@@ -44,6 +44,12 @@ public:
     void apply(const std::optional<SandboxSettings::LightAngles>& light,
                const std::optional<OrbitCamera>& camera);
 
+    /// @brief Makes the first light a `type` light: the file's light when the file has that type, otherwise a
+    /// conversion of it. A spot made from a directional light has its cone just covering the meshes and its
+    /// intensity scaled by distance², so the centre stays as bright; place it with apply() and light angles
+    /// (the file's transform of a directional light may sit anywhere). The soak run cycles light types so.
+    void setLightType(engine::LightType type);
+
 private:
     void setWorldTransform(engine::EntityId id, const engine::Transform& world);
 
@@ -52,7 +58,9 @@ private:
     engine::EntityId light_ = engine::kNoEntity;
     engine::Transform fileCamera_;
     engine::Transform fileLight_;
+    engine::LightComponent fileLightComponent_;
     glm::vec3 centre_{0.0f};
+    float radius_ = 1.0f;
     glm::vec3 lightPivot_{0.0f};
     float lightDistance_ = 1.0f;
     std::size_t triangles_ = 0;

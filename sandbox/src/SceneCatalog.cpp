@@ -9,20 +9,29 @@
 
 namespace sandbox {
 
+namespace {
+
+/// Stems of the files in `folder` with `extension`, sorted; none when the folder does not exist.
+std::vector<std::string> sortedStems(const std::filesystem::path& folder, const std::string& extension) {
+    std::vector<std::string> names;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        if (entry.path().extension() == extension) {
+            names.push_back(entry.path().stem().string());
+        }
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+} // namespace
+
 SceneCatalog::SceneCatalog(std::filesystem::path contentFolder) : contentFolder_(std::move(contentFolder)) {
     // Content scenes first, then the real-model corpus when tools/corpus.sh has built it.
-    for (const auto& [folder, extension] : {std::pair{contentFolder_ / "scenes", ".gltf"},
-                                            std::pair{cli::corpusFolder(contentFolder_), ".glb"}}) {
-        std::vector<std::string> names;
-        std::error_code error;
-        for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-            if (entry.path().extension() == extension) {
-                names.push_back(entry.path().stem().string());
-            }
-        }
-        std::sort(names.begin(), names.end());
-        names_.insert(names_.end(), names.begin(), names.end());
-    }
+    names_ = sortedStems(contentFolder_ / "scenes", ".gltf");
+    contentSceneCount_ = names_.size();
+    const std::vector<std::string> corpus = sortedStems(cli::corpusFolder(contentFolder_), ".glb");
+    names_.insert(names_.end(), corpus.begin(), corpus.end());
 }
 
 std::filesystem::path SceneCatalog::resolve(const std::string& scene) const {

@@ -14,6 +14,10 @@ public:
 
     /// @brief Names of the content scenes, sorted, then those of the corpus, sorted.
     [[nodiscard]] const std::vector<std::string>& names() const { return names_; }
+    /// @brief Names of the content scenes only, sorted.
+    [[nodiscard]] std::vector<std::string> contentNames() const {
+        return {names_.begin(), names_.begin() + static_cast<std::ptrdiff_t>(contentSceneCount_)};
+    }
 
     /// @brief The file of `scene`: a bare name is a content scene; anything with a folder or a .gltf/.glb
     /// extension is a path. Throws SandboxError when the content scene or the file does not exist (listing
@@ -23,6 +27,7 @@ public:
 private:
     std::filesystem::path contentFolder_;
     std::vector<std::string> names_;
+    std::size_t contentSceneCount_ = 0;
 };
 
 } // namespace sandbox

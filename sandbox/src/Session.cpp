@@ -15,10 +15,8 @@ void Session::loadScene(const std::string& scene, int level) {
     }
     settings_.scene = scene;
     settings_.level = level;
+    // The renderers free the old scene's GPU meshes at their next frame, once nothing references them.
     scene_ = std::move(loaded);
-    // The renderer keeps a GPU copy of every mesh it has drawn; new engines let the old scene's go.
-    renderer_ = std::make_unique<SplitRenderer>();
-    renderer_->setPassTiming(timing_);
 }
 
 FrameReport Session::render(const engine::FrameTarget& target) {

@@ -22,6 +22,9 @@ public:
 
     [[nodiscard]] const SceneCatalog& catalog() const { return catalog_; }
     [[nodiscard]] const SandboxScene& scene() const { return *scene_; }
+    /// @brief The scene, to change what the settings do not hold (SandboxScene::setLightType); loadScene()
+    /// replaces it.
+    [[nodiscard]] SandboxScene& scene() { return *scene_; }
     /// @brief The settings; edit them freely, render() applies them. Change scene and level through
     /// loadScene().
     [[nodiscard]] SandboxSettings& settings() { return settings_; }

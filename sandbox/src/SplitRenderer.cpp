@@ -37,12 +37,15 @@ FrameReport SplitRenderer::render(const engine::Scene& scene, engine::EntityId c
     if (!b) {
         return {a_->render(scene, camera, target, a, 0, width), std::nullopt};
     }
-    const int splitX =
-        std::clamp(static_cast<int>(std::lround(static_cast<double>(split) * width)), 0, width);
+    const int splitX = splitColumn(split, width);
     FrameReport report;
     report.a = a_->render(scene, camera, target, a, 0, splitX);
     report.b = b_->render(scene, camera, target, *b, splitX, width);
     return report;
+}
+
+int SplitRenderer::splitColumn(float split, int width) {
+    return std::clamp(static_cast<int>(std::lround(static_cast<double>(split) * width)), 0, width);
 }
 
 void SplitRenderer::setPassTiming(std::optional<engine::TimingMethod> method) {

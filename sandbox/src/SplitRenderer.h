@@ -43,6 +43,9 @@ public:
                        const shadows::ShadowSettings& a, const std::optional<shadows::ShadowSettings>& b,
                        float split);
 
+    /// @brief The first column of side B: round(split * width), clamped to [0, width].
+    [[nodiscard]] static int splitColumn(float split, int width);
+
     /// @brief Times both sides' passes with `method` (see engine::Engine::setPassTiming), or stops timing.
     void setPassTiming(std::optional<engine::TimingMethod> method);
 

@@ -116,7 +116,8 @@ int WindowApp::run() {
                                         GL_UNSIGNED_BYTE, rows.data());
                     truthFramebuffer.emplace("ground truth overlay");
                     truthFramebuffer->attach(GL_COLOR_ATTACHMENT0, *truthTexture);
-                    panel.setStatus("ground truth (A): " + truth->summary() +
+                    panel.setStatus("ground truth A: " + GroundTruthView::summary(truth->a) +
+                                        (truth->b ? "; B: " + GroundTruthView::summary(*truth->b) : "") +
                                         " (red acne, blue leak, yellow edge band)",
                                     false);
                 } catch (const engine::Error& error) {

@@ -70,6 +70,45 @@ TEST(SandboxCliTest, GroundTruthOverlayTintsAcneOfAHardComparison) {
     EXPECT_GT(red, truth.pixels.size() / 4 / 20); // acne tinted red
 }
 
+TEST(SandboxCliTest, GroundTruthMeasuresSideBToo) {
+    const auto folder = sandbox::test::freshFolder("cli-truth-b");
+    const auto result =
+        runSandbox("--headless " + kSmall + " --technique pcf-gsm-average --compare hard --out " +
+                   (folder / "view.png").string() + " --ground-truth " + (folder / "truth.png").string());
+    ASSERT_EQ(result.status, 0) << result.output;
+    const auto acneOf = [&](const std::string& side) {
+        const std::string label = "ground truth (" + side + "): acne ";
+        const auto at = result.output.find(label);
+        EXPECT_NE(at, std::string::npos) << result.output;
+        return at == std::string::npos ? -1.0 : std::stod(result.output.substr(at + label.size()));
+    };
+    // B's hard comparison self-shadows; A's corrected filter hardly does.
+    const double acneA = acneOf("A");
+    const double acneB = acneOf("B");
+    EXPECT_GT(acneB, 10.0) << result.output;
+    EXPECT_LT(acneA, acneB / 4.0) << result.output;
+    // The overlay tints each half with its own side's errors: the red is on B's side.
+    const engine::Image truth = sandbox::test::loadPng(folder / "truth.png");
+    std::size_t redLeft = 0;
+    std::size_t redRight = 0;
+    for (int y = 0; y < truth.size.y; ++y) {
+        for (int x = 0; x < truth.size.x; ++x) {
+            const glm::u8vec4 p = truth.at(x, y);
+            const bool red = p.r > 150 && p.g < 100 && p.b < 100;
+            (x < truth.size.x / 2 ? redLeft : redRight) += red;
+        }
+    }
+    EXPECT_GT(redRight, 4 * redLeft + 20) << redLeft << " red pixels left, " << redRight << " right";
+}
+
+TEST(SandboxCliTest, SoakRefusesImageOptionsAndUnknownScenes) {
+    expectFailure("--headless --soak 3 --out x.png", 2, "--out does not apply to --soak");
+    expectFailure("--headless --soak 3 --soak-scenes knob,nope", 2, "--soak-scenes: unknown scene 'nope'");
+    expectFailure("--headless --soak-scenes knob", 2, "--soak-scenes applies to --soak only");
+    expectFailure("--headless --soak 2", 2, "--soak: '2' is not an integer in [3, 100000]");
+    expectFailure("--soak 3", 2, "--soak applies to --headless only");
+}
+
 TEST(SandboxCliTest, UnknownTechniqueExits2) {
     expectFailure("--headless --technique nope", 2,
                   "--technique: unknown technique 'nope' (hard, slope-scaled, hw-pcf, pcf, gsm,");

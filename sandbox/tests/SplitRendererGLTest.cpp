@@ -139,3 +139,42 @@ TEST_F(SplitRendererGLTest, GrazingLightDarkensTheGround) {
     const double grazing = meanLevel(render(session));
     EXPECT_LT(grazing, high * 0.7) << "high " << high << ", grazing " << grazing;
 }
+
+namespace {
+
+/// Live GL objects but the programs: those are the variant cache, which the spot light of `spheres` extends.
+engine::gl::LiveObjectCounts liveObjectsButPrograms() {
+    engine::gl::LiveObjectCounts counts = engine::gl::liveObjectCounts();
+    counts.programs = 0;
+    return counts;
+}
+
+} // namespace
+
+TEST_F(SplitRendererGLTest, SwitchingScenesFreesTheOldScenesGlObjects) {
+    Session session(catalog, smallKnob());
+    const engine::Image knob = render(session);
+    const engine::gl::LiveObjectCounts withKnob = liveObjectsButPrograms();
+    session.loadScene("spheres", -1);
+    render(session);
+    EXPECT_GT(engine::gl::liveObjectCounts().buffers, withKnob.buffers); // more meshes than the knob's two
+    session.loadScene("knob", 1);
+    // The same renderers draw the knob again: the spheres' meshes are gone, nothing else was made anew.
+    EXPECT_EQ(sandbox::test::compare(render(session), knob, 0).maxAbsDiff, 0);
+    EXPECT_EQ(liveObjectsButPrograms(), withKnob);
+}
+
+TEST_F(SplitRendererGLTest, LightTypesConvertBothWaysAndRestoreTheFile) {
+    Session session(catalog, smallKnob());
+    session.settings().light = session.scene().fileLightAngles();
+    const engine::Image directional = render(session);
+    ASSERT_EQ(session.scene().lightType(), engine::LightType::Directional);
+    session.scene().setLightType(engine::LightType::Spot);
+    EXPECT_EQ(session.scene().lightType(), engine::LightType::Spot);
+    const engine::Image spot = render(session);
+    // A spot lights the knob differently (falloff, perspective shadow) but still lights the view.
+    EXPECT_GT(sandbox::test::compare(spot, directional, 2).fractionAbove, 0.01);
+    EXPECT_GT(sandbox::test::distinctCentreColours(spot), 100u);
+    session.scene().setLightType(engine::LightType::Directional);
+    EXPECT_EQ(sandbox::test::compare(render(session), directional, 0).maxAbsDiff, 0);
+}

@@ -56,3 +56,27 @@ TEST(MeshCacheGLTest, AMeshStillReferencedIsKeptWhenNotDrawn) {
 }
 
 } // namespace
+
+TEST(MeshCacheGLTest, EnginesSharingAScenesMeshesEachReleaseThem) {
+    // The sandbox's two sides: two engines draw one scene; once it is dropped, neither may keep its meshes
+    // alive for the other.
+    glTestContext();
+    engine::Engine left;
+    engine::Engine right;
+    engine::RenderTarget target({32, 32});
+    const LitCubeScene kept;
+    left.renderFrame(kept.scene, kept.camera, target);
+    right.renderFrame(kept.scene, kept.camera, target);
+    const int baseline = liveBuffers();
+
+    std::optional<LitCubeScene> dropped(std::in_place);
+    left.renderFrame(dropped->scene, dropped->camera, target);
+    right.renderFrame(dropped->scene, dropped->camera, target);
+    EXPECT_EQ(liveBuffers(), baseline + 4);
+    dropped.reset();
+    left.renderFrame(kept.scene, kept.camera, target);
+    right.renderFrame(kept.scene, kept.camera, target);
+    EXPECT_EQ(left.renderer().cachedMeshCount(), 1u);
+    EXPECT_EQ(right.renderer().cachedMeshCount(), 1u);
+    EXPECT_EQ(liveBuffers(), baseline);
+}

@@ -13,8 +13,6 @@
 #include <shadows/ShadowModule.h>
 #include <shadows/ShadowSettingsJson.h>
 
-#include <stb/stb_image.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -129,21 +127,6 @@ engine::Image shadedFrame(const std::filesystem::path& path, const shadows::Shad
     return target.readPixels();
 }
 
-engine::Image readPng(const std::filesystem::path& path) {
-    int width = 0;
-    int height = 0;
-    int channels = 0;
-    unsigned char* data = stbi_load(path.string().c_str(), &width, &height, &channels, 4);
-    if (!data) {
-        throw engine::Error(path.string() + ": cannot read the golden image (" + stbi_failure_reason() + ")");
-    }
-    engine::Image image;
-    image.size = {width, height};
-    image.pixels.assign(data, data + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
-    stbi_image_free(data);
-    return image;
-}
-
 std::string percent(double fraction) {
     std::ostringstream text;
     text.precision(3);
@@ -196,7 +179,7 @@ int main(int argc, char** argv) {
         bound("leak", m.leakRate, options.maxLeak);
         bound("darkening", m.darkening, options.maxDarkening);
         if (options.golden) {
-            const engine::Image golden = readPng(*options.golden);
+            const engine::Image golden = engine::readPng(*options.golden);
             if (golden.size != shaded.size) {
                 throw engine::Error(options.golden->string() + ": golden image is " +
                                     std::to_string(golden.size.x) + "x" + std::to_string(golden.size.y) +

@@ -79,9 +79,9 @@ public:
     [[nodiscard]] std::size_t meshBytes() const;
     /// @brief Meshes held: those drawn or bounded so far that a scene still references.
     [[nodiscard]] std::size_t cachedMeshCount() const { return meshes_.size(); }
-    /// @brief Frees the GPU copy and bounds of every mesh no one but this cache references any more (its
-    /// scenes were dropped). beginFrame calls it, so long sessions that switch scenes do not accumulate
-    /// meshes.
+    /// @brief Frees the GPU copy and bounds of every mesh no scene references any more (its scenes were
+    /// dropped). The cache holds meshes weakly, so several renderers drawing one scene (the sandbox's two
+    /// sides) each let go. beginFrame calls it, so long sessions that switch scenes do not accumulate meshes.
     void releaseUnreferencedMeshes();
 
     LightingEnvironment environment;
@@ -106,12 +106,13 @@ private:
         std::vector<MeshChunk> chunks;
     };
     struct CachedMesh {
-        std::shared_ptr<const MeshData> mesh;
+        /// Weak: the scenes own meshes; the cache only notices when they are gone.
+        std::weak_ptr<const MeshData> mesh;
         Aabb bounds;
         std::optional<GpuMesh> gpu;
     };
     CachedMesh& cached(const std::shared_ptr<const MeshData>& mesh);
-    const GpuMesh& upload(CachedMesh& entry);
+    const GpuMesh& upload(CachedMesh& entry, const MeshData& mesh);
     void drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly,
                  FrameStats& stats);
 
@@ -124,7 +125,8 @@ private:
     std::array<ShaderVariantKey, 4> lightCountFlags_{};
     gl::Buffer frameBlock_;
     bool sceneHasSpotLights_ = false;
-    // Keyed by the mesh pointer; the shared_ptr keeps the key alive as long as its GPU copy.
+    // Keyed by the mesh pointer; an entry whose mesh died is released (or replaced when its address is
+    // reused).
     std::map<const MeshData*, CachedMesh> meshes_;
 };
 

@@ -21,6 +21,10 @@ struct Image {
 /// so a reader never sees half a file. Creates missing parent folders. Throws IoError naming the path.
 void writePng(const std::filesystem::path& path, const Image& image);
 
+/// @brief Reads a PNG (or any format stb_image reads) as 8-bit RGBA. Throws IoError naming the path and the
+/// reason when it cannot.
+Image readPng(const std::filesystem::path& path);
+
 /// @brief Writes `text` to `path` atomically (temporary file + rename). Throws IoError naming the path.
 void writeTextFile(const std::filesystem::path& path, std::string_view text);
 

@@ -2,6 +2,7 @@
 
 #include <engine/gl/GlObject.h>
 
+#include <array>
 #include <chrono>
 #include <string_view>
 
@@ -38,7 +39,8 @@ public:
 private:
     TimingMethod method_;
     std::chrono::steady_clock::time_point start_;
-    GLuint queries_[2] = {0, 0};
+    /// Start and end timestamps, created on first use and deleted with the timer.
+    std::array<gl::GlObject<gl::detail::deleteQuery>, 2> queries_;
 };
 
 } // namespace engine

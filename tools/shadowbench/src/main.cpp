@@ -13,6 +13,7 @@
 #include <shadows/ShadowSettingsSchema.h>
 #include <shadows/ShadowTechniqueTraits.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -39,7 +40,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
                         comma-separated lists, e.g. 30,150:40,15,5,1); rows are "<scene>-az<A>-el<E>"
   --band TEXELS         boundary band half-width around true shadow edges   [2]
   --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
-  --out DIR             where results.csv, results.json and images go       [bench]
+  --out DIR             where results.csv, results.json and images go       [bench]: per scene
+                        <label>.png (shaded), <label>-classes.png, <label>-error.png, truth.png (the
+                        truth's classes) and side-by-side.png
   --content DIR         content folder                                      [installed or source content/]
   --peer DIR            add the OpenSceneGraph peer's runs found in DIR/<scene>/<technique>.json and
                         .visibility.pfm (tools/osgpeer; vdsm, sm, lispsm, ssm) as rows "osg-<technique>")";
@@ -286,9 +289,20 @@ int main(int argc, char** argv) {
             const std::filesystem::path path = cli::scenePath(sceneName, options.contentFolder);
             const std::string name = path.stem().string() + (light ? "-" + light->label() : std::string());
             const auto scene = bench.prepare(name, path, light);
+            if (!configs.empty()) {
+                // The truth's own classes (lit, shadowed, and the edge band at the first configuration's map
+                // size), beside each configuration's classes on gs-contactsheet's truth sheet.
+                const shadowbench::Accuracy reference = bench.measure(*scene, configs.front().settings);
+                engine::writePng(
+                    options.bench.imageFolder / scene->name() / "truth.png",
+                    shadowbench::classificationImage(options.bench.size, reference.classes, reference.truth));
+            }
             std::vector<engine::Image> shaded;
             for (const shadowbench::BenchConfig& config : configs) {
+                const auto started = std::chrono::steady_clock::now();
                 shadowbench::BenchResult result = bench.run(*scene, config);
+                const double seconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
                 shaded.push_back(std::move(result.shaded));
                 results.push_back(std::move(result));
                 const shadowbench::ShadowMetrics& m = results.back().metrics;
@@ -297,7 +311,8 @@ int main(int argc, char** argv) {
                           << m.leakRate << ", darkening " << m.darkening << ", edges "
                           << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean
                           << " px, shadow " << results.back().shadowPass.median << " ms, lighting "
-                          << results.back().lightingPass.median << " ms\n"
+                          << results.back().lightingPass.median << " ms; " << std::fixed
+                          << std::setprecision(1) << seconds << std::defaultfloat << " s\n"
                           << std::flush;
             }
             shadowbench::SceneCost cost = bench.measureCost(*scene);

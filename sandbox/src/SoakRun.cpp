@@ -1,0 +1,148 @@
+#include "SoakRun.h"
+
+#include "Session.h"
+
+#include <engine/RenderTarget.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+#include <malloc.h>
+#include <unistd.h>
+
+namespace sandbox {
+
+namespace {
+
+std::string describe(const engine::gl::LiveObjectCounts& c) {
+    std::ostringstream text;
+    text << c.total() << " (buffers " << c.buffers << ", textures " << c.textures << ", framebuffers "
+         << c.framebuffers << ", vertex arrays " << c.vertexArrays << ", programs " << c.programs
+         << ", shaders " << c.shaders << ", samplers " << c.samplers << ", queries " << c.queries << ")";
+    return text.str();
+}
+
+std::string fixed(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+const char* lightTypeName(engine::LightType type) {
+    return type == engine::LightType::Spot ? "spot" : "directional";
+}
+
+} // namespace
+
+SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErrors, double rssToleranceMiB) {
+    SoakVerdict verdict;
+    verdict.glErrors = glErrors;
+    const SoakSample& baseline = samples.front();
+    for (const SoakSample& sample : samples) {
+        verdict.rssGrowthMiB = std::max(verdict.rssGrowthMiB, sample.rssMiB - baseline.rssMiB);
+        const long growth = sample.glObjects.total() - baseline.glObjects.total();
+        if (std::abs(growth) > std::abs(verdict.glObjectGrowth)) {
+            verdict.glObjectGrowth = growth;
+        }
+    }
+    if (verdict.rssGrowthMiB > rssToleranceMiB) {
+        verdict.failures.push_back("RSS grew " + fixed(verdict.rssGrowthMiB, 1) +
+                                   " MiB after warm-up (tolerance " + fixed(rssToleranceMiB, 1) + " MiB)");
+    }
+    for (const SoakSample& sample : samples) {
+        if (sample.glObjects != baseline.glObjects) {
+            verdict.failures.push_back(
+                "live GL objects changed after warm-up: " + describe(baseline.glObjects) + " after cycle " +
+                std::to_string(baseline.cycle) + ", " + describe(sample.glObjects) + " after cycle " +
+                std::to_string(sample.cycle));
+            break;
+        }
+    }
+    if (glErrors > 0) {
+        verdict.failures.push_back(std::to_string(glErrors) + " GL error(s)");
+    }
+    return verdict;
+}
+
+double residentMiB() {
+    std::ifstream statm("/proc/self/statm");
+    std::size_t sizePages = 0;
+    std::size_t residentPages = 0;
+    statm >> sizePages >> residentPages;
+    return static_cast<double>(residentPages) * static_cast<double>(sysconf(_SC_PAGESIZE)) /
+           (1024.0 * 1024.0);
+}
+
+int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& out) {
+    const std::vector<shadows::ShadowTechnique>& techniques = shadows::allTechniques();
+    const std::size_t framesPerCycle = line.soakScenes.size() * techniques.size() * kSoakLightTypes.size();
+    out << "soak: " << *line.soakCycles << " cycles of " << line.soakScenes.size() << " scenes x "
+        << techniques.size() << " techniques x " << kSoakLightTypes.size()
+        << " light types = " << framesPerCycle << " frames each, " << line.size.x << "x" << line.size.y
+        << "; the first " << kSoakWarmUpCycles << " cycles are the warm-up" << std::endl;
+
+    Session session(catalog, line.settings);
+    engine::RenderTarget target(line.size);
+    std::vector<SoakSample> samples;
+    std::size_t glErrors = 0;
+    std::size_t frames = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (int cycle = 1; cycle <= *line.soakCycles; ++cycle) {
+        for (const std::string& scene : line.soakScenes) {
+            // A fresh load each cycle: the previous scene's meshes must be released, not accumulated.
+            session.loadScene(scene, line.settings.level);
+            // Light angles place a spot made from a directional light on the light's orbit (setLightType).
+            session.settings().light = session.scene().fileLightAngles();
+            for (const engine::LightType lightType : kSoakLightTypes) {
+                session.scene().setLightType(lightType);
+                for (std::size_t t = 0; t < techniques.size(); ++t) {
+                    session.settings().a.technique = techniques[t];
+                    session.settings().b.technique = techniques[(t + 1) % techniques.size()];
+                    session.settings().compare = true;
+                    session.render({target.framebuffer().id(), target.size()});
+                    ++frames;
+                    for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+                        ++glErrors;
+                        out << "soak: GL error 0x" << std::hex << error << std::dec << " at frame " << frames
+                            << " (" << scene << ", " << lightTypeName(lightType) << ", "
+                            << shadows::toString(techniques[t]) << " | "
+                            << shadows::toString(session.settings().b.technique) << ")" << std::endl;
+                    }
+                }
+            }
+        }
+        glFinish();
+        SoakSample sample;
+        sample.cycle = cycle;
+        sample.frames = frames;
+        sample.untrimmedRssMiB = residentMiB();
+        malloc_trim(0);
+        sample.rssMiB = residentMiB();
+        sample.glObjects = engine::gl::liveObjectCounts();
+        sample.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        out << "soak cycle " << cycle << "/" << *line.soakCycles
+            << (cycle <= kSoakWarmUpCycles ? " (warm-up)" : "") << ": " << frames << " frames, RSS "
+            << fixed(sample.rssMiB, 1) << " MiB after malloc_trim (" << fixed(sample.untrimmedRssMiB, 1)
+            << " before), live GL objects " << describe(sample.glObjects) << ", " << fixed(sample.seconds, 1)
+            << " s" << std::endl;
+        if (cycle >= kSoakWarmUpCycles) {
+            samples.push_back(sample);
+        }
+    }
+    const SoakVerdict verdict = judgeSoak(samples, glErrors, kSoakRssToleranceMiB);
+    out << "soak: " << frames << " frames; after warm-up the trimmed RSS grew "
+        << fixed(verdict.rssGrowthMiB, 1) << " MiB (tolerance " << fixed(kSoakRssToleranceMiB, 1)
+        << " MiB), live GL objects changed by " << verdict.glObjectGrowth << " (tolerance 0), GL errors "
+        << glErrors << ": " << (verdict.passed() ? "PASSED" : "FAILED") << std::endl;
+    for (const std::string& failure : verdict.failures) {
+        out << "soak: FAILED: " << failure << std::endl;
+    }
+    return verdict.passed() ? 0 : 1;
+}
+
+} // namespace sandbox
