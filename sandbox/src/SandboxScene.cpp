@@ -1,5 +1,7 @@
 #include "SandboxScene.h"
 
+#include <engine/LightAim.h>
+
 #include "ParameterTable.h"
 
 #include <algorithm>
@@ -9,14 +11,6 @@
 namespace sandbox {
 
 namespace {
-
-/// Unit vector from the scene towards a light at these angles.
-glm::vec3 towardsLight(const SandboxSettings::LightAngles& angles) {
-    const float azimuth = glm::radians(angles.azimuth);
-    const float elevation = glm::radians(angles.elevation);
-    return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-            std::cos(elevation) * std::cos(azimuth)};
-}
 
 glm::vec3 position(const glm::mat4& world) {
     return glm::vec3(world[3]);
@@ -69,8 +63,8 @@ SandboxScene::SandboxScene(const std::filesystem::path& path, int level)
     if (light_ == engine::kNoEntity) {
         light_ = scene.create("sandbox light");
         scene.entity(light_).light = engine::LightComponent{};
-        scene.entity(light_).transform =
-            engine::Transform::lookAt(centre_ + towardsLight({45.0f, 40.0f}) * radius * 2.0f, centre_);
+        scene.entity(light_).transform = engine::Transform::lookAt(
+            centre_ + engine::towardsLight({45.0f, 40.0f}) * radius * 2.0f, centre_);
         loaded_.warnings.push_back("the scene has no light: the sandbox added a directional light");
     }
     fileCamera_ = scene.entity(camera_).transform;
@@ -117,13 +111,13 @@ void SandboxScene::apply(const std::optional<SandboxSettings::LightAngles>& ligh
                          const std::optional<OrbitCamera>& camera) {
     engine::Scene& scene = loaded_.scene;
     if (light) {
-        const glm::vec3 eye = lightPivot_ + towardsLight(*light) * lightDistance_;
-        setWorldTransform(light_, engine::Transform::lookAt(eye, lightPivot_));
+        const glm::vec3 eye = lightPivot_ + engine::towardsLight(*light) * lightDistance_;
+        engine::setWorldTransform(loaded_.scene, light_, engine::Transform::lookAt(eye, lightPivot_));
     } else {
         scene.entity(light_).transform = fileLight_;
     }
     if (camera) {
-        setWorldTransform(camera_, camera->transform());
+        engine::setWorldTransform(loaded_.scene, camera_, camera->transform());
     } else {
         scene.entity(camera_).transform = fileCamera_;
     }
@@ -145,21 +139,6 @@ void SandboxScene::setLightType(engine::LightType type) {
         }
     }
     *loaded_.scene.entity(light_).light = light;
-}
-
-void SandboxScene::setWorldTransform(engine::EntityId id, const engine::Transform& world) {
-    engine::Entity& entity = loaded_.scene.entity(id);
-    engine::Transform local = world;
-    local.scale = entity.transform.scale;
-    if (entity.parent != engine::kNoEntity) {
-        // Express the world pose in the parent's frame (parent scale is assumed uniform, as in our content).
-        const glm::mat4 parent = loaded_.scene.worldMatrix(entity.parent);
-        local.translation = glm::vec3(glm::inverse(parent) * glm::vec4(world.translation, 1.0f));
-        const glm::mat3 rotation(glm::normalize(glm::vec3(parent[0])), glm::normalize(glm::vec3(parent[1])),
-                                 glm::normalize(glm::vec3(parent[2])));
-        local.rotation = glm::inverse(glm::quat_cast(rotation)) * world.rotation;
-    }
-    entity.transform = local;
 }
 
 } // namespace sandbox

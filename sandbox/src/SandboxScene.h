@@ -51,8 +51,6 @@ public:
     void setLightType(engine::LightType type);
 
 private:
-    void setWorldTransform(engine::EntityId id, const engine::Transform& world);
-
     content::LoadedScene loaded_;
     engine::EntityId camera_ = engine::kNoEntity;
     engine::EntityId light_ = engine::kNoEntity;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <engine/LightAim.h>
+
 #include "OrbitCamera.h"
 
 #include <shadows/ShadowSettings.h>
@@ -22,11 +24,9 @@ namespace sandbox {
 struct SandboxSettings {
     /// @brief Direction the scene's first light comes from, in degrees (ParameterTable::kAzimuth,
     /// kElevation).
-    struct LightAngles {
-        float azimuth = 0.0f;
-        float elevation = 45.0f;
-        bool operator==(const LightAngles&) const = default;
-    };
+    /// Where the light comes from (degrees; azimuth around +Y from +Z towards +X, elevation above the
+    /// horizon).
+    using LightAngles = engine::LightAngles;
 
     /// Content scene name (content/scenes/NAME.gltf) or a .gltf/.glb path. Default "knob".
     std::string scene = "knob";

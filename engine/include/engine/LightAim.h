@@ -18,6 +18,8 @@ struct LightAngles {
 
     /// @brief "az<azimuth>-el<elevation>", for file and row names.
     [[nodiscard]] std::string label() const;
+
+    bool operator==(const LightAngles&) const = default;
 };
 
 /// @brief Unit vector from the scene towards a light at `angles`.
