@@ -1,14 +1,19 @@
-// Corrected techniques against ray-traced ground truth on the knob and the torus. Thresholds: values measured
-// on llvmpipe (printed as "[ measured ]"; output is deterministic) with margin.
+// Every non-naive technique at its defaults against ray-traced ground truth, on each content scene under its
+// own light and under a low sun (5° above the horizon). Limits: the floor of the defaults (acne and leak
+// 0.05 %, darkening 0.5 %), or, where a technique does not meet it yet on these scenes, the worst value
+// measured on llvmpipe (printed as "[ measured ]"; output is deterministic) with margin, so that no default
+// gets worse unnoticed. docs/RESULTS.md, "Defaults", has the same on the real models.
 #include "../engine/GLTestContext.h"
 
 #include <shadowbench/ShadowBench.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <unistd.h>
 
 using namespace shadowbench;
@@ -17,67 +22,83 @@ using shadows::ShadowTechnique;
 namespace {
 
 struct Limit {
-    double acne;
-    double leak;
+    double acne = 5e-4;
+    double leak = 5e-4;
+    double darkening = 5e-3;
 };
 
-struct SceneCase {
-    const char* scene;
-    std::size_t minimumShadowed; // truly shadowed interior pixels the view must contain
-    std::map<ShadowTechnique, Limit> limits;
-};
+/// Techniques that miss the floor somewhere on the content scenes: their measured worst with margin.
+const std::map<ShadowTechnique, Limit>& exceptions() {
+    static const std::map<ShadowTechnique, Limit> limits = {
+        {ShadowTechnique::HardwarePcf, {0.0005, 0.0012, 0.005}},
+        {ShadowTechnique::Pcf, {0.0023, 0.0088, 0.005}},
+        {ShadowTechnique::PcfGsmPointGradient, {0.00095, 0.0005, 0.005}},
+        {ShadowTechnique::PcfGsmAverageGradient, {0.0012, 0.0005, 0.005}},
+        {ShadowTechnique::PcfGsmQuadratic, {0.0015, 0.0005, 0.0061}},
+        {ShadowTechnique::PcfGsmNearer, {0.00084, 0.0005, 0.005}},
+        {ShadowTechnique::ReceiverPlaneBias, {0.00065, 0.0005, 0.005}},
+        {ShadowTechnique::Vsm, {0.00079, 0.0005, 0.005}},
+        {ShadowTechnique::Msm, {0.0005, 0.0005, 0.022}},
+        {ShadowTechnique::Evsm, {0.00079, 0.0005, 0.011}},
+        {ShadowTechnique::JitteredPcf, {0.0026, 0.01, 0.005}},
+        {ShadowTechnique::AdaptiveBias, {0.0015, 0.0005, 0.005}},
+        {ShadowTechnique::PcfAdaptiveBias, {0.0034, 0.0005, 0.014}},
+    };
+    return limits;
+}
 
-const SceneCase kScenes[] = {
-    {"knob",
-     1000,
-     {{ShadowTechnique::SlopeScaledBias, {0.001, 0.005}},
-      {ShadowTechnique::Gsm, {0.001, 0.005}},
-      {ShadowTechnique::PcfGsmPointGradient, {0.003, 0.005}},
-      {ShadowTechnique::PcfGsmAverageGradient, {0.004, 0.005}},
-      {ShadowTechnique::PcfGsmQuadratic, {0.004, 0.005}},
-      {ShadowTechnique::ReceiverPlaneBias, {0.002, 0.005}},
-      {ShadowTechnique::NormalOffset, {0.002, 0.005}}}},
-    {"torus",
-     300,
-     {{ShadowTechnique::SlopeScaledBias, {0.001, 0.005}},
-      {ShadowTechnique::Gsm, {0.001, 0.005}},
-      {ShadowTechnique::PcfGsmPointGradient, {0.001, 0.005}},
-      {ShadowTechnique::PcfGsmAverageGradient, {0.001, 0.005}},
-      {ShadowTechnique::PcfGsmQuadratic, {0.001, 0.005}},
-      {ShadowTechnique::ReceiverPlaneBias, {0.001, 0.005}},
-      {ShadowTechnique::NormalOffset, {0.001, 0.005}}}},
-};
+Limit limitOf(ShadowTechnique technique) {
+    const auto found = exceptions().find(technique);
+    return found == exceptions().end() ? Limit{} : found->second;
+}
 
-class ShadowBenchGLTest : public testing::TestWithParam<SceneCase> {};
+/// Rates over fewer pixels than this are not checked (a grazing view may see few shadowed receivers).
+constexpr std::size_t kMinimumPixels = 1000;
+
+class ShadowBenchGLTest : public testing::TestWithParam<const char*> {};
 
 } // namespace
 
-TEST_P(ShadowBenchGLTest, CorrectedTechniquesStayUnderMeasuredAcneAndLeak) {
+TEST_P(ShadowBenchGLTest, EveryTechniqueAtItsDefaultsStaysUnderItsLimit) {
     const engine::HeadlessContext& context = glTestContext();
     BenchOptions options;
     options.size = {320, 240};
-    options.frames = 1;
+    options.timing = false;
     options.imageFolder = std::filesystem::temp_directory_path() / ("gs_bench_" + std::to_string(::getpid()));
     const ShadowBench bench(context, options);
-    const auto scene = bench.prepare(GetParam().scene, std::filesystem::path(CONTENT_DIR) / "scenes" /
-                                                           (std::string(GetParam().scene) + ".gltf"));
-    for (const auto& [technique, limit] : GetParam().limits) {
-        BenchConfig config;
-        config.label = std::string(shadows::toString(technique));
-        config.settings.technique = technique;
-        config.settings.resolution = 1024;
-        const BenchResult result = bench.run(*scene, config);
-        std::cout << "[ measured ] " << GetParam().scene << " " << config.label << ": acne "
-                  << result.metrics.acneRate << " of " << result.metrics.lit << ", leak "
-                  << result.metrics.leakRate << " of " << result.metrics.shadowed << ", MAE "
-                  << result.metrics.meanAbsoluteError << "\n";
-        EXPECT_GT(result.metrics.lit, 10000u);
-        EXPECT_GT(result.metrics.shadowed, GetParam().minimumShadowed);
-        EXPECT_LE(result.metrics.acneRate, limit.acne) << config.label;
-        EXPECT_LE(result.metrics.leakRate, limit.leak) << config.label;
+    const std::filesystem::path path =
+        std::filesystem::path(CONTENT_DIR) / "scenes" / (std::string(GetParam()) + ".gltf");
+    for (const std::optional<engine::LightAngles> light :
+         {std::optional<engine::LightAngles>{},
+          std::optional<engine::LightAngles>{engine::LightAngles{30.0f, 5.0f}}}) {
+        const auto scene = bench.prepare(GetParam(), path, light);
+        for (const ShadowTechnique technique : shadows::allTechniques()) {
+            if (shadows::traitsOf(technique).naive) {
+                continue;
+            }
+            shadows::ShadowSettings settings;
+            settings.technique = technique;
+            const ShadowMetrics m = bench.measure(*scene, settings).metrics;
+            const std::string view = std::string(GetParam()) + (light ? " " + light->label() : "") + " " +
+                                     std::string(shadows::toString(technique));
+            std::cout << "[ measured ] " << view << ": acne " << m.acneRate << " of " << m.lit << ", leak "
+                      << m.leakRate << " of " << m.shadowed << ", darkening " << m.darkening << "\n";
+            const Limit limit = limitOf(technique);
+            EXPECT_GT(m.lit, kMinimumPixels) << view;
+            EXPECT_LE(m.acneRate, limit.acne) << view;
+            EXPECT_LE(m.darkening, limit.darkening) << view;
+            if (m.shadowed >= kMinimumPixels) {
+                EXPECT_LE(m.leakRate, limit.leak) << view;
+            }
+        }
     }
-    std::filesystem::remove_all(options.imageFolder);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ShadowBenchGLTest, testing::ValuesIn(kScenes),
-                         [](const auto& test) { return std::string(test.param.scene); });
+INSTANTIATE_TEST_SUITE_P(Scenes, ShadowBenchGLTest,
+                         testing::Values("knob", "torus", "bowl", "thin-shell", "crease-cube",
+                                         "grazing-plane", "spheres"),
+                         [](const auto& test) {
+                             std::string name = test.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });

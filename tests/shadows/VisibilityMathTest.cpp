@@ -449,3 +449,26 @@ TEST(AdaptiveBiasMathTest, PerspectiveMapPredictsThePlaneDepthExactlyAcrossTexel
         EXPECT_NEAR(there.z, origin.z + glm::dot(texels, gradient), 2e-6f);
     }
 }
+
+TEST(VisibilityMathTest, NearerCorrectionDarkensAConcaveCreaseNoMoreThanEitherReference) {
+    // Two planes meeting in a concave crease 1.2 texels to the fragment's right: beyond it the surface rises
+    // towards the light (depth falls). The point gradient is the fragment's own plane's.
+    const TapPattern p = TapPattern::make(TapLayout::Grid, 4, 1.5f);
+    const glm::vec2 own(3e-4f, 1e-4f);
+    auto crease = [&](glm::vec2 o) {
+        const float beyond = std::max(o.x - 1.2f, 0.0f);
+        return 0.5f + glm::dot(o, own) - 8e-4f * beyond;
+    };
+    const Taps taps = sample(p, crease, {});
+    const float receiver = crease({});
+    const float point = pcfGsm(p, taps, receiver, own, g::GS_CORRECTION_POINT);
+    const float average = pcfGsm(p, taps, receiver, own, g::GS_CORRECTION_AVERAGE);
+    const float nearer = pcfGsm(p, taps, receiver, own, g::GS_CORRECTION_NEARER);
+    EXPECT_LT(point, 1.0f);   // the taps beyond the crease fail under the point gradient...
+    EXPECT_LT(average, 1.0f); // ...and some on the fragment's own side under the average's
+    EXPECT_GE(nearer, std::max(point, average));
+    // On a plane it is exact, like both references.
+    auto plane = [&](glm::vec2 o) { return 0.5f + glm::dot(o, own); };
+    const Taps flat = sample(p, plane, {});
+    EXPECT_EQ(pcfGsm(p, flat, plane({}) - 1e-6f, own, g::GS_CORRECTION_NEARER), 1.0f);
+}

@@ -2,7 +2,6 @@
 #include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/VisibilityMath.h>
 
-
 namespace shadows {
 
 namespace {
@@ -23,7 +22,8 @@ float bilinearReach(const ShadowSettings&) {
     return kBilinearReach;
 }
 // The pattern's farthest tap (TapPattern.h): a grid's corner, or the radius (Poisson points lie inside it,
-// circular-8's on it). From the layout alone, so settings that validate() is about to refuse cannot throw here.
+// circular-8's on it). From the layout alone, so settings that validate() is about to refuse cannot throw
+// here.
 float patternReach(const ShadowSettings& settings) {
     const float farthest =
         settings.pcfLayout == TapLayout::Grid ? settings.pcfRadius * kBilinearReach : settings.pcfRadius;
@@ -114,6 +114,18 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "the reference's \"obvious improvement\"",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
+     .usesTapPattern = true,
+     .biasesDepth = true,
+     .fuzzyComparison = true},
+    {.technique = T::PcfGsmNearer,
+     .name = "pcf-gsm-nearer",
+     .summary =
+         "PCF over GSM, each tap compared at the nearer (to the light) of the point- and average-gradient "
+         "predictions, so a concave crease darkens no more than under either",
+     .reference = "ours: docs/SHADOWS.md, \"Why the average gradient darkens concave regions more\"",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NEARER"},
+     .readsPointGradient = true,
      .usesTapPattern = true,
      .biasesDepth = true,
      .fuzzyComparison = true},

@@ -68,7 +68,7 @@ struct ShadowSettings {
     /// Receiver moved towards the light before comparing, shadow texel sizes at the receiver.
     float constantBiasTexels = 0.0f;
     /// Comparison depth lowered by this many depth steps (depthBiasStep).
-    float depthBiasSteps = 4.0f;
+    float depthBiasSteps = 16.0f;
     /// glPolygonOffset factor on the casters (SlopeScaledBias).
     float slopeScale = 1.5f;
     /// glPolygonOffset units on the casters (SlopeScaledBias).
@@ -92,7 +92,7 @@ struct ShadowSettings {
     /// Clamps the receiver-plane bias to min(0, bias).
     bool receiverPlaneClamp = true;
     /// Margin beyond the kernel's footprint of the normal offset, texel sizes.
-    float normalOffsetTexels = 1.0f;
+    float normalOffsetTexels = 0.0f;
     /// Floors the receiver depth to the format's step before comparing.
     bool floorReceiverDepth = false;
     /// Snaps directional frustums to whole texels (no shimmer).

@@ -22,6 +22,7 @@ enum class ShadowTechnique {
     PcfGsmPointGradient,   ///< 7. PCF over GSM, taps follow the fragment's gradient
     PcfGsmAverageGradient, ///< 8. PCF over GSM, taps follow the least-squares gradient of the taps
     PcfGsmQuadratic,       ///< 9. PCF over GSM, taps follow a least-squares quadric of the taps
+    PcfGsmNearer,          ///< PCF over GSM, each tap at the nearer of the point and average predictions
     ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
     NormalOffset,          ///< 11. receiver pushed along its normal, one hardware comparison
     Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound

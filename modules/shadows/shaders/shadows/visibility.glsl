@@ -151,6 +151,10 @@ const int GS_CORRECTION_NONE = 0;      // naive: every tap compared at the fragm
 const int GS_CORRECTION_POINT = 1;     // taps follow the fragment's own gradient
 const int GS_CORRECTION_AVERAGE = 2;   // taps follow the least-squares gradient of the taps' depths
 const int GS_CORRECTION_QUADRATIC = 3; // taps follow a least-squares quadric of the taps' depths
+// Each tap at the nearer (to the light) of the point and average predictions. On a concave crease the average
+// slope tilts towards the rising side: there it predicts nearer than the point gradient, on the fragment's own
+// side farther; the nearer of the two is never worse than either (docs/SHADOWS.md).
+const int GS_CORRECTION_NEARER = 4;
 
 // PCF over GSM: the average of the fuzzy visibilities of the taps, each compared at the receiver depth the
 // chosen correction predicts for it. `pointGradient` is used by GS_CORRECTION_POINT and for the fuzzy width of
@@ -160,17 +164,20 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
                          const float fitRows[6 * GS_MAX_TAPS], float fuzzyScale, float minimumWidth) {
     vec2 gradient = pointGradient;
     vec3 curvature = vec3(0.0f);
-    if (correction == GS_CORRECTION_AVERAGE) {
+    if (correction == GS_CORRECTION_AVERAGE || correction == GS_CORRECTION_NEARER) {
         gradient = gsLeastSquaresGradient(depths, offsets, count, inverseCovariance);
     } else if (correction == GS_CORRECTION_QUADRATIC) {
         gradient = gsQuadraticFit(depths, count, fitRows, curvature);
     }
-    float magnitude = length(gradient);
+    float magnitude =
+        correction == GS_CORRECTION_NEARER ? max(length(gradient), length(pointGradient)) : length(gradient);
     float sum = 0.0f;
     for (int i = 0; i < count; ++i) {
         float tapDepth = receiverDepth;
         if (correction == GS_CORRECTION_QUADRATIC) {
             tapDepth += gsQuadraticRise(offsets[i], gradient, curvature);
+        } else if (correction == GS_CORRECTION_NEARER) {
+            tapDepth += min(dot(offsets[i], gradient), dot(offsets[i], pointGradient));
         } else if (correction != GS_CORRECTION_NONE) {
             tapDepth = gsTapReceiverDepth(receiverDepth, offsets[i], gradient);
         }
