@@ -19,6 +19,18 @@ grep -q '^\[7/7\]' "$out.log" || fail "no progress lines"
 [[ -s $out/knob/side-by-side.png && -s $out/knob/rpb-d16-floor-classes.png && -s $out/knob/rpb-d16-floor-error.png ]] ||
     fail "images missing"
 
+# Each technique at its defaults under a light sweep: 2 techniques x 2 x 1 directions, edge columns written.
+"$bench" --scene knob --techniques gsm,pcf --defaults --accuracy-only --light-sweep 30,210:5 --size 96x72 \
+    --out "$out/sweep" > "$out.sweep.log" 2>&1 || fail "light sweep exited $?: $(cat "$out.sweep.log")"
+[[ $(($(wc -l < "$out/sweep/results.csv") - 1)) -eq 4 ]] || fail "light sweep: expected 4 rows"
+head -1 "$out/sweep/results.csv" | grep -q 'edge_true_to_rendered_mean' || fail "results.csv lacks the edge columns"
+grep -q '^knob-az210-el5,gsm,' "$out/sweep/results.csv" || fail "light sweep rows are not named after the view"
+grep -q '"renderedToTrue"' "$out/sweep/results.json" || fail "results.json lacks the edge distances"
+"$bench" --light-sweep 30 --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 2 ]] && grep -q "light-sweep" "$out.bad" || fail "malformed --light-sweep not refused"
+"$bench" --light-sweep 30:95 --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 2 ]] && grep -q "elevation" "$out.bad" || fail "elevation above 90° not refused"
+
 "$bench" --techniques nonsense --out "$out/x" > "$out.bad" 2>&1
 [[ $? -eq 2 ]] && grep -q "unknown technique 'nonsense'" "$out.bad" || fail "unknown technique not refused"
 "$bench" --config "x:pcfTaps=99" --out "$out/x" > "$out.bad" 2>&1

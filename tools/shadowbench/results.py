@@ -61,14 +61,22 @@ def plot(rows, scene, path):
     plt.close(fig)
 
 
+def edges(r):
+    """Edge placement, pixels: true->rendered and rendered->true, mean / 95th percentile."""
+    e = r["edges"]
+    return (f"{e['trueToRendered']['mean']:.2f} / {e['trueToRendered']['p95']:.1f} | "
+            f"{e['renderedToTrue']['mean']:.2f} / {e['renderedToTrue']['p95']:.1f}")
+
+
 def table(rows):
-    lines = ["| configuration | acne | leak | darkening | MAE | shadow ms | lighting ms | memory |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    lines = ["| configuration | acne | leak | darkening | MAE | edges true→rendered px | edges rendered→true px "
+             "| shadow ms | lighting ms | memory |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     front = {id(r) for r in pareto(rows)}
     for r in sorted(rows, key=total_ms):
         star = " ★" if id(r) in front else ""
         lines.append(f"| {r['label']}{star} | {100 * r['acneRate']:.2f} % | {100 * r['leakRate']:.2f} % | "
-                     f"{r['darkening']:.4f} | {r['mae']:.4f} | {r['shadowPassMs']['median']:.2f} | "
+                     f"{r['darkening']:.4f} | {r['mae']:.4f} | {edges(r)} | {r['shadowPassMs']['median']:.2f} | "
                      f"{r['lightingPassMs']['median']:.2f} | {r['shadowBytes'] / 2**20:.1f} MiB |")
     return "\n".join(lines)
 
@@ -92,7 +100,8 @@ out.append(f"- Ground truth: {meta['groundTruth']} visibility ray-traced with Em
 out.append(f"- Images {meta['width']}x{meta['height']}; acne = truly lit receivers with visibility < 0.5, "
            "leak = truly shadowed receivers with visibility > 0.5, both outside a band of "
            f"{meta['bandTexels']} shadow texels around true shadow edges; darkening = mean (1 - V) over truly lit "
-           "receivers; MAE over every receiver. ★ marks the Pareto front (no configuration is both faster and "
+           "receivers; MAE over every receiver; edges: distances in pixels from each true shadow-edge pixel to the "
+           "nearest rendered one and back, mean / 95th percentile. ★ marks the Pareto front (no configuration is both faster and "
            "more accurate).\n")
 
 # Reproductions.
@@ -136,12 +145,14 @@ out.append(f"Circular-8 closed form and SIMD form agree with the general regress
 
 # Filtered families.
 out.append("## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out\n")
-out.append("| scene | configuration | acne | leak | MAE | lighting ms | memory | full-kernel pixels |")
-out.append("| --- | --- | --- | --- | --- | --- | --- | --- |")
+out.append("| scene | configuration | acne | leak | MAE | edges true→rendered px | edges rendered→true px | lighting ms "
+           "| memory | full-kernel pixels |")
+out.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
 for r in filtered["results"]:
     full = f"{100 * r['fullKernelFraction']:.1f} %" if r["fullKernelFraction"] >= 0 else "—"
     out.append(f"| {r['scene']} | {r['label']} | {100 * r['acneRate']:.2f} % | {100 * r['leakRate']:.2f} % | "
-               f"{r['mae']:.4f} | {r['lightingPassMs']['median']:.2f} | {r['shadowBytes'] / 2**20:.1f} MiB | {full} |")
+               f"{r['mae']:.4f} | {edges(r)} | {r['lightingPassMs']['median']:.2f} | {r['shadowBytes'] / 2**20:.1f} MiB | "
+               f"{full} |")
 out.append("")
 for scene in sorted({r["scene"] for r in filtered["results"]}):
     full32, early32 = by_label(filtered, "jittered32-full", scene), by_label(filtered, "jittered32-early8", scene)
@@ -247,13 +258,14 @@ def real_models(real, scaling):
                  f"{cost['triangles']} triangles, {cost['drawCalls']} draw calls ({cost['culledChunks']} chunks culled), "
                  f"{cost['meshBytes'] / 2**20:.1f} MiB of mesh buffers; unshadowed frame {ours_unshadowed:.1f} ms"
                  + (f" (osg {peer_unshadowed:.1f} ms)" if peer_unshadowed else "") + ".\n",
-                 "| technique | acne | leak | darkening | MAE | frame ms | / osg-vdsm | shadow memory |",
-                 "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+                 "| technique | acne | leak | darkening | MAE | edges true→rendered px | edges rendered→true px | frame ms "
+                 "| / osg-vdsm | shadow memory |",
+                 "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
         for r in sorted(rows, key=frame_ms):
             ratio = f"{frame_ms(r) / frame_ms(vdsm):.2f}x" if vdsm else "–"
             memory = f"{r['shadowBytes'] / 2**20:.0f} MiB" if not r["peer"] else "–"
             lines.append(f"| {r['label']}{' (' + r['peer'] + ')' if r['peer'] else ''} | {100 * r['acneRate']:.3f} % | "
-                         f"{100 * r['leakRate']:.3f} % | {r['darkening']:.4f} | {r['mae']:.4f} | {frame_ms(r):.1f} | "
+                         f"{100 * r['leakRate']:.3f} % | {r['darkening']:.4f} | {r['mae']:.4f} | {edges(r)} | {frame_ms(r):.1f} | "
                          f"{ratio} | {memory} |")
         model_sections.append("\n".join(lines) + "\n")
     out.append("### Goals: every model\n")
