@@ -66,9 +66,10 @@ constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PR
   --help           this text
 Needs an X display with GLX (e.g. xvfb-run -a -s "-screen 0 1280x1024x24").)";
 
+constexpr cli::Tool kTool{kProgram, kUsage};
+
 [[noreturn]] void usageError(const std::string& message) {
-    std::cerr << kProgram << ": " << message << "\n" << kUsage << "\n";
-    std::exit(2);
+    kTool.fail(message);
 }
 
 Options parse(int argc, char** argv) {
@@ -329,12 +330,7 @@ nlohmann::ordered_json toJson(const osgpeer::FrameTimes& times) {
 } // namespace
 
 int main(int argc, char** argv) {
-    Options options;
-    try {
-        options = parse(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        usageError(error.what());
-    }
+    const Options options = kTool.parse(parse, argc, argv);
     osg::ref_ptr<OsgMessages> messages = new OsgMessages(options.verbose);
     osg::setNotifyHandler(messages.get());
     osg::setNotifyLevel(options.verbose ? osg::NOTICE : osg::WARN);

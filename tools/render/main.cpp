@@ -98,9 +98,14 @@ const std::string& usage() {
     return text;
 }
 
+const cli::Tool& tool() {
+    static const std::string text = usage();
+    static const cli::Tool gsRender{"gs-render", text};
+    return gsRender;
+}
+
 [[noreturn]] void usageError(const std::string& message) {
-    std::cerr << "gs-render: " << message << "\n" << usage() << "\n";
-    std::exit(2);
+    tool().fail(message);
 }
 
 /// Sets the schema field `row` from its command-line text (integers and choices are the only kinds with an
@@ -211,12 +216,7 @@ std::string jsonEscape(const std::string& text) {
 } // namespace
 
 int main(int argc, char** argv) {
-    Options options;
-    try {
-        options = parse(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        usageError(error.what());
-    }
+    const Options options = tool().parse(parse, argc, argv);
     try {
         const std::filesystem::path path = cli::scenePath(options.scene, options.contentFolder);
         content::SceneLoadOptions loadOptions;

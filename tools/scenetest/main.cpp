@@ -54,9 +54,10 @@ struct Options {
     std::filesystem::path out = "scenetest";
 };
 
+constexpr cli::Tool kTool{"gs-scenetest", kUsage};
+
 [[noreturn]] void usageError(const std::string& message) {
-    std::cerr << "gs-scenetest: " << message << "\n" << kUsage << "\n";
-    std::exit(2);
+    kTool.fail(message);
 }
 
 Options parse(int argc, char** argv) {

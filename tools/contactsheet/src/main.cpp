@@ -40,9 +40,10 @@ struct Options {
     int downsample = 1;
 };
 
+constexpr cli::Tool kTool{"gs-contactsheet", kUsage};
+
 [[noreturn]] void usageError(const std::string& message) {
-    std::cerr << "gs-contactsheet: " << message << "\n" << kUsage << "\n";
-    std::exit(2);
+    kTool.fail(message);
 }
 
 Options parse(int argc, char** argv) {
@@ -107,12 +108,7 @@ nlohmann::json readJson(const std::filesystem::path& path) {
 } // namespace
 
 int main(int argc, char** argv) {
-    Options options;
-    try {
-        options = parse(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        usageError(error.what());
-    }
+    const Options options = kTool.parse(parse, argc, argv);
     try {
         const std::filesystem::path resultsPath = options.bench / "results.json";
         const nlohmann::json results = readJson(resultsPath);

@@ -47,9 +47,10 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --peer DIR            add the OpenSceneGraph peer's runs found in DIR/<scene>/<technique>.json and
                         .visibility.pfm (tools/osgpeer; vdsm, sm, lispsm, ssm) as rows "osg-<technique>")";
 
+constexpr cli::Tool kTool{"gs-shadowbench", kUsage};
+
 [[noreturn]] void usageError(const std::string& message) {
-    std::cerr << "gs-shadowbench: " << message << "\n" << kUsage << "\n";
-    std::exit(2);
+    kTool.fail(message);
 }
 
 std::vector<std::string> splitList(const std::string& text) {
@@ -259,12 +260,7 @@ engine::Image sideBySide(const std::vector<engine::Image>& images) {
 } // namespace
 
 int main(int argc, char** argv) {
-    Options options;
-    try {
-        options = parse(argc, argv);
-    } catch (const std::invalid_argument& error) {
-        usageError(error.what());
-    }
+    const Options options = kTool.parse(parse, argc, argv);
     try {
         engine::HeadlessContext context;
         const shadowbench::ShadowBench bench(context, options.bench);

@@ -2,7 +2,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
 
 #include <stdexcept>
 #include <string>
@@ -74,6 +76,28 @@ public:
 private:
     std::vector<std::string> arguments_;
     std::size_t index_ = static_cast<std::size_t>(-1); // before the first
+};
+
+/// @brief A tool's name and usage text, for the command-line errors every tool reports alike.
+struct Tool {
+    std::string_view name;
+    std::string_view usage;
+
+    /// @brief "<name>: <message>" and the usage on stderr, then exit 2, the status of a bad command line.
+    [[noreturn]] void fail(const std::string& message) const {
+        std::cerr << name << ": " << message << "\n" << usage << "\n";
+        std::exit(2);
+    }
+
+    /// @brief `parser(argc, argv)`; a std::invalid_argument from it (a bad option value) goes to fail().
+    template <typename Parse>
+    auto parse(Parse parser, int argc, char** argv) const {
+        try {
+            return parser(argc, argv);
+        } catch (const std::invalid_argument& error) {
+            fail(error.what());
+        }
+    }
 };
 
 /// @brief Whether a --scene value names a file (it has a folder or a glTF extension) rather than a content
