@@ -218,9 +218,10 @@ bool accuracySweep(bool full, const std::filesystem::path& imageFolder, std::ost
                             m.darkening <= coarser * r.darkening + kDarkeningTolerance;
             allOk = allOk && (ok || naive);
             if (!ok && !naive && !imageFolder.empty()) {
-                engine::writePng(
-                    imageFolder / (c.name + " " + std::string(shadows::toString(techniques[t])) + ".png"),
-                    shadowbench::errorHeatMap(options.size, accuracy.classes, accuracy.truth, accuracy.visibility));
+                engine::writePng(imageFolder /
+                                     (c.name + " " + std::string(shadows::toString(techniques[t])) + ".png"),
+                                 shadowbench::errorHeatMap(options.size, accuracy.classes, accuracy.truth,
+                                                           accuracy.visibility));
             }
             table << std::fixed << std::setprecision(3) << " " << 100.0 * m.acneRate << " / "
                   << 100.0 * m.leakRate << " / " << 100.0 * m.darkening
