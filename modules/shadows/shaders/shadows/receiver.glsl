@@ -91,22 +91,24 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     if (slot < 0) {
         return 1.0;
     }
-    // One texel's world size at the receiver: constant for orthographic maps, growing with distance for spots.
-    // Biases are in these units, so one value holds at any scene scale and map size.
-    vec4 lightSpace = gsShadowMatrix[slot] * vec4(worldPosition, 1.0);
-    float texelSize = gsShadowTexel[slot].w > 0.5 ? gsShadowTexel[slot].z * abs(lightSpace.w) : gsShadowTexel[slot].z;
+    // One texel's world size at the receiver: constant for orthographic maps, growing with the distance along
+    // the axis (clip w, whose row is the matrix's last) for spots. Biases are in these units, so one value holds
+    // at any scene scale and map size.
+    mat4 m = gsShadowMatrix[slot];
+    vec4 wRow = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+    bool perspective = gsShadowTexel[slot].w > 0.5;
+    float texelSize = gsShadowTexel[slot].z * (perspective ? abs(dot(wRow, vec4(worldPosition, 1.0))) : 1.0);
     vec3 position = worldPosition + toLight * (gsShadowConstantBiasTexels * texelSize);
 #ifdef GS_SHADOW_NORMAL_OFFSET
     // A perspective map measures depth along its axis, so a receiver facing the light but not the axis still
     // slopes in depth there: offset for the steeper of the two angles.
     float cosine = abs(dot(normal, toLight));
-    if (gsShadowTexel[slot].w > 0.5) {
-        mat4 m = gsShadowMatrix[slot];
-        cosine = min(cosine, abs(dot(normal, normalize(vec3(m[0][3], m[1][3], m[2][3])))));
+    if (perspective) {
+        cosine = min(cosine, abs(dot(normal, normalize(vec3(wRow)))));
     }
     position += normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
 #endif
-    vec4 clip = gsShadowMatrix[slot] * vec4(position, 1.0);
+    vec4 clip = m * vec4(position, 1.0);
     // Behind a spot light (w <= 0) nothing is mapped; the cone attenuation is zero there anyway.
     float w = clip.w > 1e-20 ? clip.w : 1e-20;
     vec3 coord = clip.xyz / w;
@@ -133,7 +135,7 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     lookup.tangentGradient = vec2(0.0);
 #ifdef GS_SHADOW_TANGENT_PLANE
     lookup.tangentGradient =
-        gsTangentPlaneGradient(gsShadowMatrix[slot], worldPosition, facetNormal, gsShadowTexel[slot].x);
+        gsTangentPlaneGradient(m, worldPosition, facetNormal, gsShadowTexel[slot].x);
 #endif
     lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
