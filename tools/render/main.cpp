@@ -139,13 +139,10 @@ Options parse(int argc, char** argv) {
     Options options;
     shadows::ShadowSettings settings;
     bool shadowsOn = true;
-    for (cli::ArgumentList arguments(argc, argv); arguments.next();) {
+    for (cli::ArgumentList arguments(argc, argv, tool()); arguments.next();) {
         const std::string arg = arguments.current();
         const auto value = [&] { return arguments.value(); };
-        if (arg == "--help") {
-            std::cout << usage() << "\n";
-            std::exit(0);
-        } else if (arg == "--list-techniques") {
+        if (arg == "--list-techniques") {
             for (const shadows::ShadowTechnique technique : shadows::allTechniques()) {
                 std::cout << shadows::toString(technique) << "\n";
             }

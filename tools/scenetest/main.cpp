@@ -62,13 +62,10 @@ constexpr cli::Tool kTool{"gs-scenetest", kUsage};
 
 Options parse(int argc, char** argv) {
     Options options;
-    for (cli::ArgumentList arguments(argc, argv); arguments.next();) {
+    for (cli::ArgumentList arguments(argc, argv, kTool); arguments.next();) {
         const std::string arg = arguments.current();
         const auto value = [&] { return arguments.value(); };
-        if (arg == "--help") {
-            std::cout << kUsage << "\n";
-            std::exit(0);
-        } else if (arg == "--technique") {
+        if (arg == "--technique") {
             options.technique = value();
         } else if (arg == "--settings") {
             const std::string path = value();

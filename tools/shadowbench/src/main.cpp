@@ -101,13 +101,10 @@ std::vector<engine::LightAngles> lightSweep(const std::string& spec) {
 Options parse(int argc, char** argv) {
     Options options;
     options.bench.imageFolder = "bench";
-    for (cli::ArgumentList arguments(argc, argv); arguments.next();) {
+    for (cli::ArgumentList arguments(argc, argv, kTool); arguments.next();) {
         const std::string arg = arguments.current();
         const auto value = [&] { return arguments.value(); };
-        if (arg == "--help") {
-            std::cout << kUsage << "\n";
-            std::exit(0);
-        } else if (arg == "--scene") {
+        if (arg == "--scene") {
             options.scenes.push_back(value());
         } else if (arg == "--techniques") {
             const std::string list = value();

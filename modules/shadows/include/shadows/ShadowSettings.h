@@ -57,8 +57,8 @@ enum class ShadowDebugView {
 /// here; what each field means, its unit, range and when it applies are in the one schema
 /// (shadows::settingsSchema(), generated into the settings table of docs/SHADOWS.md).
 struct ShadowSettings {
-    /// Visibility function; the default is the most accurate per millisecond on the real corpus (docs/RESULTS.md,
-    /// "Defaults").
+    /// Visibility function; the default is the most accurate per millisecond on the real corpus
+    /// (docs/RESULTS.md, "Defaults").
     ShadowTechnique technique = ShadowTechnique::NormalOffset;
     /// Width and height of each shadow map, texels.
     int resolution = 2048;

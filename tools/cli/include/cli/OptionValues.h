@@ -55,29 +55,6 @@ inline glm::ivec2 sizeIn(std::string_view option, const std::string& text, int l
             integerIn(option, text.substr(x + 1), low, high)};
 }
 
-/// @brief A command line's arguments in order, for option loops: `next()` moves to the next argument and
-/// `value()` takes the argument after the current option.
-class ArgumentList {
-public:
-    ArgumentList(int argc, char** argv) : arguments_(argv + 1, argv + argc) {}
-
-    /// @brief Moves to the next argument; false after the last.
-    bool next() { return ++index_ < arguments_.size(); }
-    [[nodiscard]] const std::string& current() const { return arguments_[index_]; }
-    /// @brief The current option's value (the next argument). Throws std::invalid_argument("<option> needs a
-    /// value") after the last argument.
-    std::string value() {
-        if (index_ + 1 >= arguments_.size()) {
-            throw std::invalid_argument(current() + " needs a value");
-        }
-        return arguments_[++index_];
-    }
-
-private:
-    std::vector<std::string> arguments_;
-    std::size_t index_ = static_cast<std::size_t>(-1); // before the first
-};
-
 /// @brief A tool's name and usage text, for the command-line errors every tool reports alike.
 struct Tool {
     std::string_view name;
@@ -98,6 +75,37 @@ struct Tool {
             fail(error.what());
         }
     }
+};
+
+/// @brief A command line's arguments in order, for option loops: `next()` moves to the next argument and
+/// `value()` takes the argument after the current option.
+class ArgumentList {
+public:
+    /// @brief The arguments of `tool`'s command line; `--help` anywhere prints its usage and exits 0.
+    ArgumentList(int argc, char** argv, const Tool& tool) : arguments_(argv + 1, argv + argc), tool_(tool) {}
+
+    /// @brief Moves to the next argument; false after the last.
+    bool next() {
+        if (++index_ < arguments_.size() && current() == "--help") {
+            std::cout << tool_.usage << "\n";
+            std::exit(0);
+        }
+        return index_ < arguments_.size();
+    }
+    [[nodiscard]] const std::string& current() const { return arguments_[index_]; }
+    /// @brief The current option's value (the next argument). Throws std::invalid_argument("<option> needs a
+    /// value") after the last argument.
+    std::string value() {
+        if (index_ + 1 >= arguments_.size()) {
+            throw std::invalid_argument(current() + " needs a value");
+        }
+        return arguments_[++index_];
+    }
+
+private:
+    std::vector<std::string> arguments_;
+    const Tool& tool_;
+    std::size_t index_ = static_cast<std::size_t>(-1); // before the first
 };
 
 /// @brief Whether a --scene value names a file (it has a folder or a glTF extension) rather than a content
