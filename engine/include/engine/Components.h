@@ -13,9 +13,10 @@ struct MeshComponent {
     std::shared_ptr<const MeshData> mesh;
 };
 
-enum class LightType { Directional, Spot };
+enum class LightType { Directional, Spot, Point };
 
-/// @brief A light; it shines along the entity's local -Z axis (position matters for spot lights only).
+/// @brief A light; directional and spot lights shine along the entity's local -Z axis; spot and point lights
+/// shine from the entity's position.
 struct LightComponent {
     LightType type = LightType::Directional;
     /// Linear RGB colour. Default white.
