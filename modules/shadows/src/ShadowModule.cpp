@@ -143,7 +143,8 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
     std::vector<int> slotOfLight(engine::ForwardRenderer::kMaxLights, -1);
     std::size_t used = 0;
     for (const engine::FrameLight& light : frame.lights) {
-        if (!light.light.castsShadows || used == kMaxMaps) {
+        // Point lights get cube maps in a following commit.
+        if (!light.light.castsShadows || used == kMaxMaps || light.light.type == engine::LightType::Point) {
             continue;
         }
         const LightProjection projection =
