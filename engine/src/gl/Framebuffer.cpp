@@ -21,6 +21,10 @@ void Framebuffer::attach(GLenum attachment, const Texture& texture, GLint level)
     glNamedFramebufferTexture(object_.id(), attachment, texture.id(), level);
 }
 
+void Framebuffer::attach(GLenum attachment, const TextureArray& texture, GLint layer, GLint level) {
+    glNamedFramebufferTextureLayer(object_.id(), attachment, texture.id(), level, layer);
+}
+
 void Framebuffer::setDrawBuffers(std::initializer_list<GLenum> buffers) {
     if (buffers.size() == 0) {
         glNamedFramebufferDrawBuffer(object_.id(), GL_NONE);

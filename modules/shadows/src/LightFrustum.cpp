@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace shadows {
@@ -19,6 +20,68 @@ glm::mat4 lightRotation(const glm::vec3& direction) {
 // Maps clip space [-1,1]³ to texture space [0,1]³.
 const glm::mat4 kClipToTexture =
     glm::translate(glm::mat4(1.0f), glm::vec3(0.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+
+/// A perspective map with light view `view` and square field of view `fov`: near and far bound the boxes in
+/// front of the light (and `range` when positive).
+LightProjection perspectiveMap(const glm::mat4& view, float fov, float range, std::span<const Aabb> boxes,
+                               int resolution) {
+    LightProjection result;
+    result.perspective = true;
+    result.view = view;
+    float nearest = std::numeric_limits<float>::max();
+    float farthest = 0.0f;
+    for (const Aabb& box : boxes) {
+        if (box.empty()) {
+            continue;
+        }
+        const Aabb light = box.transformed(result.view);
+        if (light.min.z >= 0.0f) {
+            continue; // entirely behind the light
+        }
+        nearest = std::min(nearest, std::max(-light.max.z, 0.0f));
+        farthest = std::max(farthest, -light.min.z);
+    }
+    if (range > 0.0f) {
+        farthest = std::min(farthest, range);
+    }
+    if (!(farthest > 0.0f)) {
+        return result;
+    }
+    // Depth precision of a perspective map falls with far/near: keep near at least 1/1000 of far.
+    nearest = std::clamp(nearest * 0.99f, farthest * 1e-3f, farthest * 0.5f);
+    result.projection = glm::perspective(fov, 1.0f, nearest, farthest * 1.01f);
+    result.depthRange = {nearest, farthest * 1.01f};
+    result.worldToShadow = kClipToTexture * result.projection * result.view;
+    result.texelScale = 2.0f * std::tan(0.5f * fov) / static_cast<float>(resolution);
+    result.valid = true;
+    return result;
+}
+
+/// The corners of a projection's view volume in view space, and its near and far view depths.
+struct FrustumCorners {
+    std::array<glm::vec3, 4> nearPoints{};
+    std::array<glm::vec3, 4> farPoints{};
+    float near = 0.0f;
+    float far = 0.0f;
+};
+
+FrustumCorners frustumCorners(const glm::mat4& projection) {
+    const glm::mat4 clipToView = glm::inverse(projection);
+    FrustumCorners corners;
+    std::size_t i = 0;
+    for (const float x : {-1.0f, 1.0f}) {
+        for (const float y : {-1.0f, 1.0f}) {
+            const glm::vec4 near = clipToView * glm::vec4(x, y, -1.0f, 1.0f);
+            const glm::vec4 far = clipToView * glm::vec4(x, y, 1.0f, 1.0f);
+            corners.nearPoints[i] = glm::vec3(near) / near.w;
+            corners.farPoints[i] = glm::vec3(far) / far.w;
+            ++i;
+        }
+    }
+    corners.near = -corners.nearPoints[0].z;
+    corners.far = -corners.farPoints[0].z;
+    return corners;
+}
 
 } // namespace
 
@@ -89,37 +152,184 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
 
 LightProjection fitSpotLight(const glm::vec3& position, const glm::vec3& direction, float outerConeAngle,
                              float range, std::span<const Aabb> boxes, int resolution) {
+    const glm::mat4 view = lightRotation(direction) * glm::translate(glm::mat4(1.0f), -position);
+    const float fov = std::min(2.0f * outerConeAngle + 0.02f, 3.0f);
+    return perspectiveMap(view, fov, range, boxes, resolution);
+}
+
+std::vector<float> cascadeSplits(float near, float far, int count, float weight) {
+    std::vector<float> splits(static_cast<std::size_t>(count) + 1);
+    for (int i = 0; i <= count; ++i) {
+        const float fraction = static_cast<float>(i) / static_cast<float>(count);
+        const float logarithmic = near * std::pow(far / near, fraction);
+        const float uniform = near + (far - near) * fraction;
+        splits[static_cast<std::size_t>(i)] = weight * logarithmic + (1.0f - weight) * uniform;
+    }
+    splits.front() = near;
+    splits.back() = far;
+    return splits;
+}
+
+std::optional<glm::vec2> visibleDepthRange(const FitView& view, std::span<const Aabb> boxes) {
+    const FrustumCorners corners = frustumCorners(view.projection);
+    const glm::mat4 viewProjection = view.projection * view.view;
+    glm::vec2 range(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max());
+    for (const Aabb& box : boxes) {
+        if (box.empty() || !engine::intersectsClipVolume(box, viewProjection)) {
+            continue;
+        }
+        const Aabb inView = box.transformed(view.view);
+        range.x = std::min(range.x, -inView.max.z);
+        range.y = std::max(range.y, -inView.min.z);
+    }
+    range = glm::clamp(range, glm::vec2(corners.near), glm::vec2(corners.far));
+    if (!(range.y > range.x)) {
+        return std::nullopt;
+    }
+    // 1/8-octave steps: the range moves only when a receiver enters or leaves the view, or crosses a step.
+    const auto step = [](float depth, bool up) {
+        const float octaves = 8.0f * std::log2(depth);
+        return std::exp2((up ? std::ceil(octaves) : std::floor(octaves)) / 8.0f);
+    };
+    return glm::clamp(glm::vec2(step(range.x, false), step(range.y, true)), glm::vec2(corners.near),
+                      glm::vec2(corners.far));
+}
+
+bool hasReceiversBetween(const FitView& view, std::span<const Aabb> boxes, float near, float far) {
+    const glm::mat4 viewProjection = view.projection * view.view;
+    for (const Aabb& box : boxes) {
+        if (box.empty() || !engine::intersectsClipVolume(box, viewProjection)) {
+            continue;
+        }
+        const Aabb inView = box.transformed(view.view);
+        if (-inView.min.z >= near && -inView.max.z <= far) {
+            return true;
+        }
+    }
+    return false;
+}
+
+Sphere frustumSliceSphere(const glm::mat4& projection, float sliceNear, float sliceFar) {
+    const FrustumCorners corners = frustumCorners(projection);
+    const float span = std::max(corners.far - corners.near, 1e-30f);
+    std::array<glm::vec3, 8> slice{};
+    glm::vec3 nearCentre(0.0f);
+    glm::vec3 farCentre(0.0f);
+    for (std::size_t i = 0; i < 4; ++i) {
+        const glm::vec3 edge = corners.farPoints[i] - corners.nearPoints[i];
+        slice[i] = corners.nearPoints[i] + edge * ((sliceNear - corners.near) / span);
+        slice[i + 4] = corners.nearPoints[i] + edge * ((sliceFar - corners.near) / span);
+        nearCentre += 0.25f * slice[i];
+        farCentre += 0.25f * slice[i + 4];
+    }
+    float a = 0.0f; // half-diagonals of the slice's near and far faces
+    float b = 0.0f;
+    for (std::size_t i = 0; i < 4; ++i) {
+        a = std::max(a, glm::length(slice[i] - nearCentre));
+        b = std::max(b, glm::length(slice[i + 4] - farCentre));
+    }
+    // On the axis at t from the near face, the farthest corners are sqrt(a² + t²) and sqrt(b² + (L − t)²)
+    // away; they are equal at t = (b² − a² + L²) / 2L (clamped to the slice).
+    const float length = glm::length(farCentre - nearCentre);
+    Sphere sphere;
+    sphere.centre = nearCentre;
+    if (length > 0.0f) {
+        const float t = std::clamp((b * b - a * a + length * length) / (2.0f * length), 0.0f, length);
+        sphere.centre = nearCentre + (farCentre - nearCentre) * (t / length);
+    }
+    for (const glm::vec3& corner : slice) {
+        sphere.radius = std::max(sphere.radius, glm::length(corner - sphere.centre));
+    }
+    return sphere;
+}
+
+LightProjection fitCascade(const glm::vec3& direction, const FitView& view, float sliceNear, float sliceFar,
+                           std::span<const Aabb> boxes, int resolution, bool snapToTexels) {
     LightProjection result;
-    result.perspective = true;
-    result.view = lightRotation(direction) * glm::translate(glm::mat4(1.0f), -position);
-    float nearest = std::numeric_limits<float>::max();
-    float farthest = 0.0f;
+    if (!(sliceFar > sliceNear) || resolution < 4) {
+        return result;
+    }
+    result.view = lightRotation(direction);
+    const Sphere sphere = frustumSliceSphere(view.projection, sliceNear, sliceFar);
+    const glm::vec3 centre =
+        glm::vec3(result.view * glm::inverse(view.view) * glm::vec4(sphere.centre, 1.0f));
+    // Two texels of slack so the square still holds the sphere after its centre snaps by up to a texel.
+    const float texel = 2.0f * sphere.radius / static_cast<float>(resolution - 2);
+    const float half = 0.5f * texel * static_cast<float>(resolution);
+    glm::vec2 middle(centre);
+    if (snapToTexels) {
+        middle = glm::floor(middle / texel) * texel; // the texel grid stays put in world space
+    }
+    float top = centre.z + sphere.radius;
+    float bottom = centre.z - sphere.radius;
     for (const Aabb& box : boxes) {
         if (box.empty()) {
             continue;
         }
         const Aabb light = box.transformed(result.view);
-        if (light.min.z >= 0.0f) {
-            continue; // entirely behind the light
+        if (light.max.x >= middle.x - half && light.min.x <= middle.x + half &&
+            light.max.y >= middle.y - half && light.min.y <= middle.y + half) {
+            top = std::max(top, light.max.z);
         }
-        nearest = std::min(nearest, std::max(-light.max.z, 0.0f));
-        farthest = std::max(farthest, -light.min.z);
     }
-    if (range > 0.0f) {
-        farthest = std::min(farthest, range);
+    if (snapToTexels) {
+        // Depth moves in steps of a quarter radius, so the stored depths keep their values too.
+        const float step = 0.25f * sphere.radius;
+        top = std::ceil(top / step) * step;
+        bottom = std::floor(bottom / step) * step;
     }
-    if (!(farthest > 0.0f)) {
-        return result;
-    }
-    // Depth precision of a perspective map falls with far/near: keep near at least 1/1000 of far.
-    nearest = std::clamp(nearest * 0.99f, farthest * 1e-3f, farthest * 0.5f);
-    const float fov = std::min(2.0f * outerConeAngle + 0.02f, 3.0f);
-    result.projection = glm::perspective(fov, 1.0f, nearest, farthest * 1.01f);
-    result.depthRange = {nearest, farthest * 1.01f};
+    result.projection =
+        glm::ortho(middle.x - half, middle.x + half, middle.y - half, middle.y + half, -top, -bottom);
     result.worldToShadow = kClipToTexture * result.projection * result.view;
-    result.texelScale = 2.0f * std::tan(0.5f * fov) / static_cast<float>(resolution);
+    result.texelScale = texel;
     result.valid = true;
     return result;
+}
+
+glm::vec3 cubeFaceAxis(int face) {
+    glm::vec3 axis(0.0f);
+    axis[face / 2] = face % 2 == 0 ? 1.0f : -1.0f;
+    return axis;
+}
+
+float cubeFaceFieldOfView(int resolution, float marginTexels) {
+    const float r = static_cast<float>(resolution);
+    const float margin = std::clamp(marginTexels, 0.0f, 0.25f * r);
+    return 2.0f * std::atan(r / (r - 2.0f * margin));
+}
+
+LightProjection fitPointLightFace(const glm::vec3& position, int face, float range,
+                                  const glm::mat4& cameraViewProjection, std::span<const Aabb> boxes,
+                                  int resolution, float marginTexels) {
+    const glm::mat4 view = lightRotation(cubeFaceAxis(face)) * glm::translate(glm::mat4(1.0f), -position);
+    const float fov = cubeFaceFieldOfView(resolution, marginTexels);
+    // The face's frustum out to the farthest box, to find which boxes it sees.
+    float reach = 0.0f;
+    for (const Aabb& box : boxes) {
+        if (!box.empty()) {
+            reach = std::max(
+                reach, glm::length(glm::max(glm::abs(box.min - position), glm::abs(box.max - position))));
+        }
+    }
+    if (range > 0.0f) {
+        reach = std::min(reach, range);
+    }
+    if (!(reach > 0.0f)) {
+        return {};
+    }
+    const glm::mat4 faceVolume = glm::perspective(fov, 1.0f, reach * 1e-6f, reach) * view;
+    std::vector<Aabb> seen;
+    bool receives = false;
+    for (const Aabb& box : boxes) {
+        if (!box.empty() && engine::intersectsClipVolume(box, faceVolume)) {
+            seen.push_back(box);
+            receives = receives || engine::intersectsClipVolume(box, cameraViewProjection);
+        }
+    }
+    if (!receives) {
+        return {};
+    }
+    return perspectiveMap(view, fov, range, seen, resolution);
 }
 
 } // namespace shadows

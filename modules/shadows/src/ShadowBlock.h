@@ -9,12 +9,28 @@
 
 namespace shadows {
 
-/// Shadow maps the lighting pass can read at once (GS_SHADOW_MAX_MAPS in shaders/shadows/receiver.glsl).
-inline constexpr int kMaxMaps = 4;
+/// Shadow maps the lighting pass can read at once: lights' maps, cascades and cube faces together
+/// (GS_SHADOW_MAX_MAPS in shaders/shadows/block.glsl); each is a layer of the module's map arrays.
+inline constexpr int kMaxMaps = 24;
 /// Uniform buffer binding of the block; 0 is the engine's FrameBlock.
 inline constexpr GLuint kShadowBlockBinding = 1;
 
-static_assert(engine::ForwardRenderer::kMaxLights % 4 == 0, "light slots are packed four to an ivec4");
+/// @brief How a light's maps are laid out (GS_SHADOW_LIGHT_* in block.glsl).
+enum class LightMapsKind : std::int32_t { None = 0, Single = 1, Cascades = 2, Cube = 3 };
+
+/// @brief std140 mirror of GsShadowLightMaps: which maps a light has and how a fragment picks one.
+struct alignas(16) LightMapsBlock {
+    /// x: LightMapsKind, y: cascade count.
+    glm::ivec4 kind;
+    /// Map slot of the single map (x), of each cascade, or of cube faces 0–3; -1: not drawn this frame.
+    glm::ivec4 slots;
+    /// Map slots of cube faces 4 and 5 (xy).
+    glm::ivec4 faceSlots;
+    /// Cascades: the view depth each one starts and ends at.
+    glm::vec4 splitNear;
+    glm::vec4 splitFar;
+};
+static_assert(sizeof(LightMapsBlock) == 80);
 
 /// @brief std140 mirror of GsShadowBlock in shaders/shadows/block.glsl: every scalar the passes read,
 /// written once per frame.
@@ -24,8 +40,9 @@ struct alignas(16) ShadowBlock {
     glm::vec4 texel[kMaxMaps];
     /// xy: near and far of a perspective map, zero for orthographic ones.
     glm::vec4 depthRange[kMaxMaps];
-    /// Shadow map of each engine light, -1 for none, four to an ivec4.
-    glm::ivec4 slotOfLight[engine::ForwardRenderer::kMaxLights / 4];
+    LightMapsBlock lights[engine::ForwardRenderer::kMaxLights];
+    /// The fit camera's view depth of a world point is dot(viewDepth, (p, 1)).
+    glm::vec4 viewDepth;
     glm::mat4 msmDequantize;
     /// The columns of a mat2: std140 pads each to a vec4.
     glm::vec4 tapInverseCovariance[2];
@@ -48,18 +65,21 @@ struct alignas(16) ShadowBlock {
     float tapDisplace;
     /// Depth units the comparison depth is lowered by.
     float depthBias;
+    /// Fraction of a cascade's depth span blended into the next.
+    float cascadeBlend;
 };
 
 static_assert(offsetof(ShadowBlock, texel) == 64 * kMaxMaps);
 static_assert(offsetof(ShadowBlock, depthRange) == 80 * kMaxMaps);
-static_assert(offsetof(ShadowBlock, slotOfLight) == 96 * kMaxMaps);
-static_assert(offsetof(ShadowBlock, msmDequantize) ==
-              96 * kMaxMaps + 4 * engine::ForwardRenderer::kMaxLights);
+static_assert(offsetof(ShadowBlock, lights) == 96 * kMaxMaps);
+static_assert(offsetof(ShadowBlock, viewDepth) == 96 * kMaxMaps + 80 * engine::ForwardRenderer::kMaxLights);
+static_assert(offsetof(ShadowBlock, msmDequantize) == offsetof(ShadowBlock, viewDepth) + 16);
 static_assert(offsetof(ShadowBlock, tapInverseCovariance) == offsetof(ShadowBlock, msmDequantize) + 64);
 static_assert(offsetof(ShadowBlock, techniqueParameters) == offsetof(ShadowBlock, tapInverseCovariance) + 32);
 static_assert(offsetof(ShadowBlock, constantBiasTexels) == offsetof(ShadowBlock, techniqueParameters) + 16);
 static_assert(offsetof(ShadowBlock, receiverPlaneClamp) == offsetof(ShadowBlock, constantBiasTexels) + 32);
 static_assert(offsetof(ShadowBlock, tapDisplace) == offsetof(ShadowBlock, receiverPlaneClamp) + 16);
 static_assert(offsetof(ShadowBlock, depthBias) == offsetof(ShadowBlock, tapDisplace) + 4);
+static_assert(offsetof(ShadowBlock, cascadeBlend) == offsetof(ShadowBlock, depthBias) + 4);
 
 } // namespace shadows

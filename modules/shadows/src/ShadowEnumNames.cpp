@@ -65,14 +65,15 @@ std::span<const EnumName<ReceiverPlaneKernel>> enumNames() {
 
 template <>
 std::span<const EnumName<ShadowDebugView>> enumNames() {
-    static constexpr std::array<EnumName<ShadowDebugView>, 7> names{
+    static constexpr std::array<EnumName<ShadowDebugView>, 8> names{
         {{ShadowDebugView::None, "none"},
          {ShadowDebugView::TexelCheckerboard, "texels"},
          {ShadowDebugView::GradientMagnitude, "gradient"},
          {ShadowDebugView::Bias, "bias"},
          {ShadowDebugView::Visibility, "visibility"},
          {ShadowDebugView::ShadowMap, "shadow-map"},
-         {ShadowDebugView::FullKernel, "kernel"}}};
+         {ShadowDebugView::FullKernel, "kernel"},
+         {ShadowDebugView::Maps, "maps"}}};
     return names;
 }
 

@@ -1,6 +1,6 @@
 #include "JitterTexture.h"
 #include "ShadowBlock.h"
-#include "ShadowMapTarget.h"
+#include "ShadowMapArray.h"
 #include "ShadowSamplers.h"
 
 #include <shadows/ShadowModule.h>
@@ -67,30 +67,36 @@ void ShadowModule::setSettings(const ShadowSettings& settings) {
 
 ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
-    stats.shadowMaps = static_cast<int>(maps_.size());
-    for (const auto& map : maps_) {
-        stats.bytes += map->bytes(plan_);
-    }
+    stats.shadowMaps = static_cast<int>(slots_.size());
+    stats.bytes = maps_ ? maps_->bytes(plan_) : 0;
     return stats;
 }
 
 std::optional<LightProjection> ShadowModule::lightProjection(int lightIndex) const {
-    for (const auto& map : maps_) {
-        if (map->lightIndex == lightIndex) {
-            return map->projection;
+    for (const MapSlot& slot : slots_) {
+        if (slot.lightIndex == lightIndex) {
+            return slot.projection;
         }
     }
     return std::nullopt;
+}
+
+std::vector<LightProjection> ShadowModule::lightProjections(int lightIndex) const {
+    std::vector<LightProjection> projections;
+    for (const MapSlot& slot : slots_) {
+        if (slot.lightIndex == lightIndex) {
+            projections.push_back(slot.projection);
+        }
+    }
+    return projections;
 }
 
 void ShadowModule::attach(engine::ModuleHost& host) {
     host_ = &host;
     host.shaders().add(gsShadowShaders());
     host.shaders().add("shadows/techniques.glsl", techniqueIncludes());
-    for (int slot = 0; slot < kMaxMaps; ++slot) {
-        mapUnits_.push_back(host.reserveTextureUnit());
-        gradientUnits_.push_back(host.reserveTextureUnit());
-    }
+    mapUnit_ = host.reserveTextureUnit();
+    gradientUnit_ = host.reserveTextureUnit();
     jitterUnit_ = host.reserveTextureUnit();
     dirty_ = true;
 }
@@ -105,7 +111,8 @@ void ShadowModule::detach() {
 }
 
 void ShadowModule::releaseResources() {
-    maps_.clear();
+    slots_.clear();
+    maps_.reset();
     uploadedFrame_.clear();
 }
 
@@ -140,39 +147,92 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         boxes.push_back(local.transformed(model));
     });
 
-    std::vector<int> slotOfLight(engine::ForwardRenderer::kMaxLights, -1);
-    std::size_t used = 0;
+    const FitView fit = fitView_.value_or(FitView{frame.view, frame.projection});
+    const glm::mat4 fitViewProjection = fit.projection * fit.view;
+    const int resolution = settings_.resolution;
+
+    slots_.clear();
+    std::vector<LightMapsBlock> lights(engine::ForwardRenderer::kMaxLights);
     for (const engine::FrameLight& light : frame.lights) {
-        // Point lights get cube maps in a following commit.
-        if (!light.light.castsShadows || used == kMaxMaps || light.light.type == engine::LightType::Point) {
+        LightMapsBlock& maps = lights[static_cast<std::size_t>(light.index)];
+        maps.slots = maps.faceSlots = glm::ivec4(-1);
+        if (!light.light.castsShadows) {
             continue;
         }
-        const LightProjection projection =
-            light.light.type == engine::LightType::Directional
-                ? fitDirectionalLight(light.direction, frame.viewProjection, boxes, settings_.resolution,
-                                      settings_.texelSnapping)
-                : fitSpotLight(light.position, light.direction, light.light.outerConeAngle, light.light.range,
-                               boxes, settings_.resolution);
-        if (!projection.valid) {
-            continue;
+        // The slot of a fitted map, -1 when it has nothing to draw or every slot is taken.
+        const auto add = [&](const LightProjection& projection) {
+            if (!projection.valid || slots_.size() == static_cast<std::size_t>(kMaxMaps)) {
+                return -1;
+            }
+            slots_.push_back({light.index, projection});
+            return static_cast<int>(slots_.size()) - 1;
+        };
+        const auto kind = [&](LightMapsKind drawn) {
+            const bool any = glm::any(glm::greaterThanEqual(maps.slots, glm::ivec4(0))) ||
+                             glm::any(glm::greaterThanEqual(maps.faceSlots, glm::ivec4(0)));
+            return static_cast<std::int32_t>(any ? drawn : LightMapsKind::None);
+        };
+        switch (light.light.type) {
+        case engine::LightType::Directional:
+            if (settings_.cascadeCount == 1) {
+                maps.slots.x = add(fitDirectionalLight(light.direction, fitViewProjection, boxes, resolution,
+                                                       settings_.texelSnapping));
+                maps.kind.x = kind(LightMapsKind::Single);
+                break;
+            }
+            if (const std::optional<glm::vec2> range = visibleDepthRange(fit, boxes)) {
+                const int count = settings_.cascadeCount;
+                const std::vector<float> splits =
+                    cascadeSplits(range->x, range->y, count, settings_.cascadeSplitWeight);
+                for (int cascade = 0; cascade < count; ++cascade) {
+                    const auto c = static_cast<std::size_t>(cascade);
+                    // A cascade also covers the previous one's blend band, which fades into it.
+                    const float sliceNear =
+                        splits[c] -
+                        (cascade > 0 ? settings_.cascadeBlend * (splits[c] - splits[c - 1]) : 0.0f);
+                    maps.splitNear[cascade] = splits[c];
+                    maps.splitFar[cascade] = splits[c + 1];
+                    if (hasReceiversBetween(fit, boxes, sliceNear, splits[c + 1])) {
+                        maps.slots[cascade] = add(fitCascade(light.direction, fit, sliceNear, splits[c + 1],
+                                                             boxes, resolution, settings_.texelSnapping));
+                    }
+                }
+                maps.kind = glm::ivec4(kind(LightMapsKind::Cascades), count, 0, 0);
+            }
+            break;
+        case engine::LightType::Spot:
+            maps.slots.x = add(fitSpotLight(light.position, light.direction, light.light.outerConeAngle,
+                                            light.light.range, boxes, resolution));
+            maps.kind.x = kind(LightMapsKind::Single);
+            break;
+        case engine::LightType::Point:
+            for (int face = 0; face < kCubeFaces; ++face) {
+                const int slot =
+                    add(fitPointLightFace(light.position, face, light.light.range, fitViewProjection, boxes,
+                                          resolution, plan_.kernelReachTexels));
+                if (face < 4) {
+                    maps.slots[face] = slot;
+                } else {
+                    maps.faceSlots[face - 4] = slot;
+                }
+            }
+            maps.kind.x = kind(LightMapsKind::Cube);
+            break;
         }
-        if (used == maps_.size()) {
-            maps_.push_back(std::make_unique<ShadowMapTarget>(settings_.resolution, plan_));
-        }
-        maps_[used]->lightIndex = light.index;
-        maps_[used]->projection = projection;
-        slotOfLight[static_cast<std::size_t>(light.index)] = static_cast<int>(used);
-        ++used;
     }
-    // Lights that stopped casting (or left the view) give their maps back.
-    maps_.resize(used);
-    if (used > 0) {
-        uploadBlock(slotOfLight);
+    if (slots_.empty()) {
+        maps_.reset(); // nothing casts this frame: give the memory back
+        return;
     }
+    // The arrays hold exactly the maps in use; a change in their number reallocates them.
+    if (!maps_ || maps_->layers() != static_cast<int>(slots_.size())) {
+        maps_ = std::make_unique<ShadowMapArray>(resolution, static_cast<int>(slots_.size()), plan_);
+    }
+    uploadBlock(lights, fit);
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
-    if (maps_.empty()) {
+    if (slots_.empty()) {
         return;
     }
     const engine::gl::Program& program = host_->programs().get(kDepthProgram, depthKey_);
@@ -190,21 +250,23 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
     }
     glDisable(GL_FRAMEBUFFER_SRGB);
-    for (const auto& map : maps_) {
-        map->framebuffer.bind();
+    for (std::size_t layer = 0; layer < slots_.size(); ++layer) {
+        const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
+        const LightProjection& projection = slots_[layer].projection;
+        framebuffer.bind();
         glViewport(0, 0, settings_.resolution, settings_.resolution);
         glClearDepth(1.0);
-        if (map->gradient) {
+        if (maps_->gradient) {
             const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-            glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, zero);
-        } else if (map->moments) {
-            glClearNamedFramebufferfv(map->framebuffer.id(), GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
+            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
+        } else if (maps_->moments) {
+            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
         }
         glClear(GL_DEPTH_BUFFER_BIT);
-        const glm::mat4 lightViewProjection = map->projection.projection * map->projection.view;
+        const glm::mat4 lightViewProjection = projection.projection * projection.view;
         program.set("uLightViewProjection", lightViewProjection);
-        program.set("uDepthRange", map->projection.depthRange);
-        // Culled to the light's own clip volume: casters outside it could not write a texel.
+        program.set("uDepthRange", projection.depthRange);
+        // Culled to the map's own clip volume: casters outside it could not write a texel.
         host_->drawMeshes(frame.scene, lightViewProjection, [&](engine::EntityId, const glm::mat4& model) {
             program.set("uModel", model);
             return true;
@@ -220,37 +282,39 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
 void ShadowModule::filterMoments() {
     const engine::gl::Program& blur = host_->programs().get(kBlurProgram, 0);
     blur.use();
-    blur.set("uSource", static_cast<int>(mapUnits_[0]));
+    blur.set("uSource", static_cast<int>(mapUnit_));
     blur.set("uRadius", settings_.momentBlurRadius);
     glDisable(GL_DEPTH_TEST);
     if (!fullscreenVertexArray_) {
         fullscreenVertexArray_ = std::make_unique<engine::gl::VertexArray>();
     }
     fullscreenVertexArray_->bind();
-    glBindSampler(mapUnits_[0], 0);
-    for (const auto& map : maps_) {
-        if (settings_.momentBlurRadius > 0) {
-            // Horizontal into the temporary level, then vertical back into the moments' level 0.
-            map->blurFramebuffer->bind();
-            map->moments->bind(mapUnits_[0]);
+    glBindSampler(mapUnit_, 0);
+    if (settings_.momentBlurRadius > 0) {
+        for (int layer = 0; layer < maps_->layers(); ++layer) {
+            // Horizontal into the temporary layer, then vertical back into the moments' layer, level 0.
+            maps_->blurFramebuffer->bind();
+            glBindTextureUnit(mapUnit_, maps_->moments->id());
+            blur.set("uLayer", layer);
             blur.set("uDirection", glm::ivec2(1, 0));
             glDrawArrays(GL_TRIANGLES, 0, 3);
-            map->framebuffer.bind();
-            map->blurTemporary->bind(mapUnits_[0]);
+            maps_->framebuffers[static_cast<std::size_t>(layer)].bind();
+            glBindTextureUnit(mapUnit_, maps_->blurTemporary->id());
+            blur.set("uLayer", 0);
             blur.set("uDirection", glm::ivec2(0, 1));
             glDrawArrays(GL_TRIANGLES, 0, 3);
         }
-        glGenerateTextureMipmap(map->moments->id());
     }
+    glGenerateTextureMipmap(maps_->moments->id());
     glEnable(GL_DEPTH_TEST);
 }
 
 engine::ShaderVariantKey ShadowModule::variantBits(const engine::DrawContext&) const {
-    return maps_.empty() ? 0 : lightingKey_;
+    return slots_.empty() ? 0 : lightingKey_;
 }
 
 void ShadowModule::bindLightingResources(const engine::gl::Program& program, const engine::DrawContext&) {
-    if (maps_.empty()) {
+    if (slots_.empty()) {
         return;
     }
     if (!samplers_) {
@@ -263,13 +327,11 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         glBindTextureUnit(jitterUnit_, jitter_->id());
         glBindSampler(jitterUnit_, 0);
     }
-    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
-        glBindTextureUnit(mapUnits_[slot], maps_[slot]->sampledTexture());
-        glBindSampler(mapUnits_[slot], samplers_->forMap(plan_.sampler));
-        if (maps_[slot]->gradient) {
-            glBindTextureUnit(gradientUnits_[slot], maps_[slot]->gradient->id());
-            glBindSampler(gradientUnits_[slot], samplers_->linear());
-        }
+    glBindTextureUnit(mapUnit_, maps_->sampledTexture());
+    glBindSampler(mapUnit_, samplers_->forMap(plan_.sampler));
+    if (maps_->gradient) {
+        glBindTextureUnit(gradientUnit_, maps_->gradient->id());
+        glBindSampler(gradientUnit_, samplers_->linear());
     }
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());
     auto& uploaded = uploadedFrame_[program.id()];
@@ -281,11 +343,9 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
     // What the block cannot hold: sampler units, and the tap arrays (std140 would pad each float to 16
     // bytes).
     const GLuint id = program.id();
-    const std::vector<GLint> mapUnits(mapUnits_.begin(), mapUnits_.end());
-    const std::vector<GLint> gradientUnits(gradientUnits_.begin(), gradientUnits_.end());
-    glProgramUniform1iv(id, program.uniformLocation("gsShadowMap"), kMaxMaps, mapUnits.data());
-    if (const GLint location = program.uniformLocation("gsShadowGradientMap"); location >= 0) {
-        glProgramUniform1iv(id, location, kMaxMaps, gradientUnits.data());
+    program.set("gsShadowMaps", static_cast<int>(mapUnit_));
+    if (const GLint location = program.uniformLocation("gsShadowGradientMaps"); location >= 0) {
+        glProgramUniform1i(id, location, static_cast<GLint>(gradientUnit_));
     }
     program.set("gsShadowJitter", static_cast<int>(jitterUnit_));
     if (const GLint location = program.uniformLocation("gsTapOffsets"); location >= 0) {
@@ -298,22 +358,22 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
     }
 }
 
-void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
+void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit) {
     ShadowBlock block{};
     const float resolution = static_cast<float>(settings_.resolution);
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         block.worldToShadow[slot] = glm::mat4(1.0f);
     }
-    for (std::size_t slot = 0; slot < maps_.size(); ++slot) {
-        const LightProjection& projection = maps_[slot]->projection;
+    for (std::size_t slot = 0; slot < slots_.size(); ++slot) {
+        const LightProjection& projection = slots_[slot].projection;
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
         block.depthRange[slot] = glm::vec4(projection.depthRange, 0.0f, 0.0f);
     }
-    for (std::size_t light = 0; light < slotOfLight.size(); ++light) {
-        block.slotOfLight[light / 4][static_cast<glm::length_t>(light % 4)] = slotOfLight[light];
-    }
+    std::copy(lights.begin(), lights.end(), block.lights);
+    // View depth is -z in view space: minus the view matrix's third row.
+    block.viewDepth = -glm::vec4(fit.view[0][2], fit.view[1][2], fit.view[2][2], fit.view[3][2]);
     block.msmDequantize = glm::inverse(glsl::GS_MSM_QUANTIZE);
     block.tapInverseCovariance[0] = glm::vec4(pattern_.inverseCovariance[0], 0.0f, 0.0f);
     block.tapInverseCovariance[1] = glm::vec4(pattern_.inverseCovariance[1], 0.0f, 0.0f);
@@ -332,6 +392,7 @@ void ShadowModule::uploadBlock(const std::vector<int>& slotOfLight) {
     block.earlyOutPairs = settings_.earlyOutTestTaps / 2;
     block.tapCount = static_cast<std::int32_t>(pattern_.offsets.size());
     block.tapDisplace = settings_.pcfRadius / std::sqrt(2.0f);
+    block.cascadeBlend = settings_.cascadeBlend;
     if (!shadowBlock_) {
         shadowBlock_ =
             std::make_unique<engine::gl::Buffer>(sizeof(ShadowBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);

@@ -60,7 +60,8 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
                                                   "GS_SHADOW_DEBUG_BIAS",
                                                   "GS_SHADOW_DEBUG_VISIBILITY",
                                                   "GS_SHADOW_DEBUG_MAP",
-                                                  "GS_SHADOW_DEBUG_KERNEL"};
+                                                  "GS_SHADOW_DEBUG_KERNEL",
+                                                  "GS_SHADOW_DEBUG_MAPS"};
     if (settings.debugView != ShadowDebugView::None) {
         defines.push_back(kDebugDefines[static_cast<std::size_t>(settings.debugView)]);
     }
@@ -121,6 +122,10 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
         plan.depthBias = settings.depthBiasSteps * depthBiasStep(settings.depthFormat);
     }
     plan.needsJitterTexture = plan.traits->jittered;
+    // Two texels cover a bilinear footprint and central differences around any tap.
+    plan.kernelReachTexels = 2.0f +
+                             (plan.usesTapPattern || plan.traits->jittered ? settings.pcfRadius : 0.0f) +
+                             (plan.momentsFormat != 0 ? static_cast<float>(settings.momentBlurRadius) : 0.0f);
     return plan;
 }
 

@@ -1,3 +1,4 @@
+#include <shadows/LightFrustum.h>
 #include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettingsSchema.h>
 
@@ -67,6 +68,9 @@ bool chebyshevBound(const S& s) {
 }
 bool jittered(const S& s) {
     return traitsOf(s.technique).jittered;
+}
+bool cascaded(const S& s) {
+    return s.cascadeCount > 1;
 }
 template <ShadowTechnique Technique>
 bool only(const S& s) {
@@ -197,6 +201,22 @@ const std::vector<SettingRow>& rows() {
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},
+        {"cascadeCount", "", "cascades",
+         "Cascades of each directional light's shadow map. 1: one map fitted to the receivers in view. More: "
+         "the view's depth range of visible receivers is split by the practical split scheme, each slice "
+         "gets "
+         "a map around its bounding sphere, snapped to texels; a cascade no visible receiver falls in is not "
+         "drawn.",
+         IntSetting{&S::cascadeCount, [](const S&) { return fixed({.min = 1, .max = kMaxCascades}); }},
+         always, "--cascades"},
+        {"cascadeSplitWeight", "", "split weight",
+         "Weight of the logarithmic split scheme against the uniform one (Zhang et al. 2006, practical split "
+         "scheme): 1 gives texels proportional to depth, 0 equal slices.",
+         FloatSetting{&S::cascadeSplitWeight, {.max = 1.0f}, 0.0f, 1.0f, "%.2f"}, cascaded},
+        {"cascadeBlend", "", "cascade blend",
+         "Fraction of each cascade's depth span, at its far end, where visibility blends linearly into the "
+         "next cascade's (hides the seam; those pixels sample two maps).",
+         FloatSetting{&S::cascadeBlend, {.max = 0.5f}, 0.0f, 0.5f, "%.2f"}, cascaded},
         {"debugView", "", "debug view", "What the lighting pass shows instead of the shaded colour.",
          choice<ShadowDebugView, &S::debugView>(), always, "--debug-view"},
     };

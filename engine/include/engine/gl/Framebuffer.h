@@ -2,6 +2,7 @@
 
 #include <engine/gl/GlObject.h>
 #include <engine/gl/Texture.h>
+#include <engine/gl/TextureArray.h>
 
 #include <string_view>
 
@@ -14,6 +15,8 @@ public:
     explicit Framebuffer(std::string_view label);
 
     void attach(GLenum attachment, const Texture& texture, GLint level = 0);
+    /// @brief Attaches one layer of an array texture.
+    void attach(GLenum attachment, const TextureArray& texture, GLint layer, GLint level = 0);
     /// @brief Selects which colour attachments are drawn to; none for depth-only passes.
     void setDrawBuffers(std::initializer_list<GLenum> buffers);
     /// @brief Throws GlError naming the framebuffer when it is incomplete.

@@ -6,7 +6,9 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <span>
+#include <vector>
 
 namespace shadows {
 
@@ -48,5 +50,69 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
 /// `range` when it is positive).
 LightProjection fitSpotLight(const glm::vec3& position, const glm::vec3& direction, float outerConeAngle,
                              float range, std::span<const Aabb> boxes, int resolution);
+
+/// @brief The camera shadow maps are fitted to: world → view, and view → clip.
+struct FitView {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+};
+
+/// @brief Most cascades a directional light can have (ShadowSettings::cascadeCount).
+inline constexpr int kMaxCascades = 4;
+
+/// @brief The practical split scheme (Zhang, Sun, Xu, Lun, "Parallel-Split Shadow Maps for Large-scale
+/// Virtual Environments", VRCIA 2006, section 3.2): split i of `count` at w·n·(f/n)^(i/count) + (1−w)·(n +
+/// (f−n)·i/count), a blend of the logarithmic scheme (texel size proportional to depth, ideal for perspective
+/// aliasing) and the uniform one. Returns count + 1 ascending view depths, the first exactly `near`, the last
+/// exactly `far`.
+std::vector<float> cascadeSplits(float near, float far, int count, float weight);
+
+/// @brief The view depths the fit's camera sees receivers at: the range of the boxes that intersect its view
+/// volume, clamped to its near and far planes and widened to 1/8-octave steps (so cascades keep their splits
+/// while the camera moves). nullopt when no box is in view.
+std::optional<glm::vec2> visibleDepthRange(const FitView& view, std::span<const Aabb> boxes);
+
+/// @brief Whether a box that intersects the view volume of `view` reaches view depths between `near` and
+/// `far`: a cascade over that slice would have a visible receiver.
+bool hasReceiversBetween(const FitView& view, std::span<const Aabb> boxes, float near, float far);
+
+/// @brief A sphere in view space.
+struct Sphere {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+/// @brief The smallest sphere centred on the frustum's axis that holds the slice of the view frustum between
+/// view depths `sliceNear` and `sliceFar`. It depends on the projection and the slice only, so a cascade
+/// fitted to it keeps its size, to the bit, however the camera moves or turns (Valient, "Stable Rendering of
+/// Cascaded Shadow Maps", ShaderX6, 2008).
+Sphere frustumSliceSphere(const glm::mat4& projection, float sliceNear, float sliceFar);
+
+/// @brief Fits the orthographic map of one cascade of a directional light shining along `direction`: a square
+/// around the bounding sphere of the slice [sliceNear, sliceFar] of `view`, its origin snapped to whole
+/// texels when `snapToTexels` (the texel grid then stays fixed in world space: no shimmer), and its depth
+/// range extended towards the light over every box that overlaps the square, so casters outside the view
+/// still cast. Invalid when the slice is empty.
+LightProjection fitCascade(const glm::vec3& direction, const FitView& view, float sliceNear, float sliceFar,
+                           std::span<const Aabb> boxes, int resolution, bool snapToTexels);
+
+/// @brief Faces of a point light's cube map.
+inline constexpr int kCubeFaces = 6;
+
+/// @brief The axis face `face` looks along: +X, −X, +Y, −Y, +Z, −Z (gsCubeFace's order).
+glm::vec3 cubeFaceAxis(int face);
+
+/// @brief Field of view of a cube face that holds `marginTexels` texels beyond the 90° face on each side at
+/// `resolution`: tan(fov/2) = R / (R − 2m). Kernels that reach up to the margin past a face's edge then read
+/// the same face's own map instead of clamping at its border.
+float cubeFaceFieldOfView(int resolution, float marginTexels);
+
+/// @brief Fits the perspective map of face `face` of a point light at `position` (see cubeFaceFieldOfView);
+/// near and far bound the boxes the face's frustum sees (and `range` when positive). Invalid when no box that
+/// intersects the camera's view volume (`cameraViewProjection`) lies in the face's frustum: the face has no
+/// visible receiver.
+LightProjection fitPointLightFace(const glm::vec3& position, int face, float range,
+                                  const glm::mat4& cameraViewProjection, std::span<const Aabb> boxes,
+                                  int resolution, float marginTexels);
 
 } // namespace shadows

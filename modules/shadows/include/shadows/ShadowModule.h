@@ -16,13 +16,15 @@
 
 namespace shadows {
 
-struct ShadowMapTarget;
+struct ShadowMapArray;
+struct LightMapsBlock;
 class ShadowSamplers;
 class JitterTexture;
 
 /// @brief Resource and frame counters of the shadow module.
 struct ShadowStats {
-    /// Shadow maps drawn in the last frame (one per shadow-casting light with visible receivers).
+    /// Shadow maps drawn in the last frame: one per shadow-casting spot or directional light with visible
+    /// receivers, one per cascade and one per cube face that has visible receivers.
     int shadowMaps = 0;
     /// GPU memory of the allocated shadow maps (depth plus any gradient target), bytes.
     std::size_t bytes = 0;
@@ -53,8 +55,16 @@ public:
     [[nodiscard]] const ShadowPlan& plan() const { return plan_; }
     /// @brief Shadow maps drawn in the last frame and the memory they hold.
     [[nodiscard]] ShadowStats stats() const;
-    /// @brief The projection of the shadow map of engine light `lightIndex` in the last frame, if it has one.
+    /// @brief The projection of the first shadow map of engine light `lightIndex` in the last frame (its
+    /// nearest cascade, its first cube face drawn), if it has one.
     [[nodiscard]] std::optional<LightProjection> lightProjection(int lightIndex) const;
+    /// @brief The projections of every shadow map of engine light `lightIndex` in the last frame, in slot
+    /// order (cascades near to far, cube faces in gsCubeFace's order, those drawn).
+    [[nodiscard]] std::vector<LightProjection> lightProjections(int lightIndex) const;
+    /// @brief Fits the maps to `view` instead of the frame's camera; nullopt (the default) follows the
+    /// camera. A frozen fit shows what a camera's maps cover from elsewhere, and lets a measurement move the
+    /// fit while the observer stays still (shimmer, docs/RESULTS.md).
+    void setFitView(std::optional<FitView> view) { fitView_ = view; }
 
     /// @brief Registers the module's GLSL files and reserves its texture units.
     void attach(engine::ModuleHost& host) override;
@@ -75,10 +85,16 @@ public:
     void bindLightingResources(const engine::gl::Program& program, const engine::DrawContext& draw) override;
 
 private:
+    /// One map of the frame: a light's, or one of its cascades or cube faces.
+    struct MapSlot {
+        int lightIndex = -1;
+        LightProjection projection;
+    };
+
     void releaseResources();
     void filterMoments();
-    /// Writes this frame's GsShadowBlock: the maps' projections, each light's map and the settings' scalars.
-    void uploadBlock(const std::vector<int>& slotOfLight);
+    /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
+    void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit);
     [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;
 
     ShadowSettings settings_;
@@ -86,13 +102,15 @@ private:
     TapPattern pattern_;
     engine::ModuleHost* host_ = nullptr;
     std::unique_ptr<ShadowSamplers> samplers_;
-    std::vector<GLuint> mapUnits_;
-    std::vector<GLuint> gradientUnits_;
+    GLuint mapUnit_ = 0;
+    GLuint gradientUnit_ = 0;
     GLuint jitterUnit_ = 0;
     std::unique_ptr<JitterTexture> jitter_;
     std::unique_ptr<engine::gl::VertexArray> fullscreenVertexArray_;
-    std::vector<std::unique_ptr<ShadowMapTarget>> maps_;
+    std::vector<MapSlot> slots_;
+    std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
     std::unique_ptr<engine::gl::Buffer> shadowBlock_;
+    std::optional<FitView> fitView_;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds

@@ -52,6 +52,10 @@ struct ShadowPlan {
     /// Depth units the comparison depth is lowered by (depthBiasSteps format steps; 0 unless the technique
     /// biasesDepth).
     float depthBias = 0.0f;
+    /// How far from the lookup, in texels, the technique reads the map (taps, jitter, blur, bilinear and
+    /// central-difference neighbours): cube faces are widened by this much so kernels near a face's edge read
+    /// the same face.
+    float kernelReachTexels = 0.0f;
     /// The stratified jitter texture of jittered PCF is bound.
     bool needsJitterTexture = false;
 };

@@ -49,7 +49,9 @@ enum class ShadowDebugView {
     Bias,
     Visibility,
     ShadowMap,
-    FullKernel
+    FullKernel,
+    /// The map each pixel reads: cascade index (directional) or cube face (point) as colour.
+    Maps
 };
 
 /// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it
@@ -98,6 +100,12 @@ struct ShadowSettings {
     bool floorReceiverDepth = false;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
+    /// Cascades of each directional light's map (1: one map fitted to the visible receivers).
+    int cascadeCount = 1;
+    /// Weight of the logarithmic scheme in the cascades' practical split scheme (0: uniform splits).
+    float cascadeSplitWeight = 0.5f;
+    /// Fraction of each cascade's depth span, at its far end, blended into the next cascade.
+    float cascadeBlend = 0.1f;
     /// Half-width of the moments' separable box blur, texels.
     int momentBlurRadius = 2;
     /// Smallest variance the Chebyshev bound uses.

@@ -1,13 +1,28 @@
 // The shadow module's per-frame scalars, read by the lighting pass and by the shadow pass (the technique's
 // parameters). Mirrors ShadowBlock (modules/shadows/src/ShadowBlock.h); binding 0 is the engine's FrameBlock,
 // whose GS_MAX_LIGHTS (frame.glsl) sizes the light slots.
-const int GS_SHADOW_MAX_MAPS = 4;
+const int GS_SHADOW_MAX_MAPS = 24;
+
+// How a light's maps are laid out (LightMapsKind).
+const int GS_SHADOW_LIGHT_NONE = 0;
+const int GS_SHADOW_LIGHT_SINGLE = 1;
+const int GS_SHADOW_LIGHT_CASCADES = 2;
+const int GS_SHADOW_LIGHT_CUBE = 3;
+
+struct GsShadowLightMaps {
+    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count
+    ivec4 slots;     // map slot of the single map (x), of each cascade, or of cube faces 0-3; -1: none
+    ivec4 faceSlots; // cube faces 4, 5 (xy)
+    vec4 splitNear;  // cascades: view depth each starts at
+    vec4 splitFar;   // cascades: view depth each ends at
+};
 
 layout(std140, binding = 1) uniform GsShadowBlock {
     mat4 gsShadowMatrix[GS_SHADOW_MAX_MAPS];    // world -> shadow texture space (divide by w)
     vec4 gsShadowTexel[GS_SHADOW_MAX_MAPS];     // x resolution, y 1/resolution, z texel scale, w perspective
     vec4 gsShadowDepthRange[GS_SHADOW_MAX_MAPS]; // xy near, far of a perspective map; zero for orthographic
-    ivec4 gsShadowSlots[GS_MAX_LIGHTS / 4];     // shadow map of each engine light, -1 for none
+    GsShadowLightMaps gsShadowLights[GS_MAX_LIGHTS];
+    vec4 gsShadowViewDepth;                     // view depth of p = dot(gsShadowViewDepth, vec4(p, 1))
     mat4 gsShadowMsmDequantize;                 // MSM 16-bit: inverse of the optimised basis
     mat2 gsTapInverseCovariance;
     vec4 gsShadowTechniqueParameters;           // the technique's own (ShadowTechniqueTraits::shaderParameters)
@@ -25,5 +40,6 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     int gsTapCount;
     float gsTapDisplace;                        // circular-8 d, texels
     float gsShadowDepthBias;                    // depth units the comparison depth is lowered by
+    float gsShadowCascadeBlend;                 // fraction of a cascade's span blended into the next
 };
 

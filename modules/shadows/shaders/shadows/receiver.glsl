@@ -8,22 +8,26 @@
 
 #include "block.glsl"
 
+// Every map of the frame is a layer (its slot) of one array: a fragment may pick its cascade or cube face
+// itself, which a sampler array would not allow (its index must be uniform).
 #ifdef GS_SHADOW_SAMPLER_COMPARE
-uniform sampler2DShadow gsShadowMap[GS_SHADOW_MAX_MAPS];
+uniform sampler2DArrayShadow gsShadowMaps;
 #else
-uniform sampler2D gsShadowMap[GS_SHADOW_MAX_MAPS];
+uniform sampler2DArray gsShadowMaps;
 #endif
 #ifdef GS_SHADOW_GRADIENT_STORED
-uniform sampler2D gsShadowGradientMap[GS_SHADOW_MAX_MAPS];
+uniform sampler2DArray gsShadowGradientMaps;
 #endif
 uniform vec2 gsTapOffsets[GS_MAX_TAPS];
 uniform float gsTapFitRows[6 * GS_MAX_TAPS];
 
-// Where a receiver lands in its light's map.
+// Where a receiver lands in one shadow map.
 struct GsShadowLookup {
-    int slot;
+    int slot;            // the map (layer of gsShadowMaps)
     vec2 coord;          // shadow texture coordinates
-    vec2 texel;          // the same in texels
+    vec2 coordDx;        // their screen derivatives (explicit: a pixel quad may span maps)
+    vec2 coordDy;
+    vec2 texel;          // the coordinates in texels
     float depth;         // receiver depth in the map's [0,1] range
     float momentDepth;   // the same as the moments store it (gsLinearDepth)
     vec2 pointGradient;  // the fragment's depth gradient per texel (GS_SHADOW_GRADIENT_*), else zero
@@ -74,9 +78,22 @@ mat2 gsShadowRotation() {
 #endif
 }
 
-#ifndef GS_SHADOW_SAMPLER_COMPARE
+#ifdef GS_SHADOW_SAMPLER_COMPARE
+// The map's hardware comparison at `coord` (its sampler decides NEAREST or 2x2 LINEAR PCF).
+float gsShadowCompare(int slot, vec2 coord, float reference) {
+    return texture(gsShadowMaps, vec4(coord, float(slot), reference));
+}
+#else
 float gsShadowDepthAt(int slot, vec2 texel) {
-    return texture(gsShadowMap[slot], texel * gsShadowTexel[slot].y).r;
+    return texture(gsShadowMaps, vec3(texel * gsShadowTexel[slot].y, float(slot))).r;
+}
+
+// The 2x2 depths around `coord` (textureGather order).
+vec4 gsShadowGather(int slot, vec2 coord) { return textureGather(gsShadowMaps, vec3(coord, float(slot))); }
+
+// Filtered moments under the lookup, trilinear over the mip chain with the lookup's own derivatives.
+vec4 gsShadowMoments(GsShadowLookup lookup) {
+    return textureGrad(gsShadowMaps, vec3(lookup.coord, float(lookup.slot)), lookup.coordDx, lookup.coordDy);
 }
 #endif
 
@@ -84,62 +101,79 @@ float gsShadowDepthAt(int slot, vec2 texel) {
 // own define.
 #include "techniques.glsl"
 
-float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
-    GsShadowLookup lookup;
-    lookup.slot = gsShadowSlots[lightIndex / 4][lightIndex % 4];
-    int slot = lookup.slot;
+// The image of a world-space offset `d` at `position` in map coordinates and depth: the derivative of the
+// projection (clip.xyz / clip.w), exact for perspective maps too.
+vec3 gsShadowDerivative(mat4 m, vec4 clip, vec3 d) {
+    vec4 dClip = m * vec4(d, 0.0);
+    return (dClip.xyz - clip.xyz * (dClip.w / clip.w)) / clip.w;
+}
+
+// The screen derivatives a fragment's lookups need, taken once before any per-fragment choice of map.
+struct GsShadowFragment {
+    vec3 position;
+    vec3 normal;
+    vec3 toLight;
+    vec3 dPdx; // world position per pixel
+    vec3 dPdy;
+};
+
+// Visibility of the fragment in map `slot`; -1 (no map drawn) is lit.
+float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     if (slot < 0) {
         return 1.0;
     }
+    GsShadowLookup lookup;
+    lookup.slot = slot;
     // One texel's world size at the receiver: constant for orthographic maps, growing with the distance along
-    // the axis (clip w, whose row is the matrix's last) for spots. Biases are in these units, so one value holds
-    // at any scene scale and map size.
+    // the axis (clip w, whose row is the matrix's last) for perspective ones. Biases are in these units, so one
+    // value holds at any scene scale, map size and cascade.
     mat4 m = gsShadowMatrix[slot];
     vec4 wRow = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
     bool perspective = gsShadowTexel[slot].w > 0.5;
-    float texelSize = gsShadowTexel[slot].z * (perspective ? abs(dot(wRow, vec4(worldPosition, 1.0))) : 1.0);
-    vec3 position = worldPosition + toLight * (gsShadowConstantBiasTexels * texelSize);
+    float texelSize =
+        gsShadowTexel[slot].z * (perspective ? abs(dot(wRow, vec4(fragment.position, 1.0))) : 1.0);
+    vec3 position = fragment.position + fragment.toLight * (gsShadowConstantBiasTexels * texelSize);
 #ifdef GS_SHADOW_NORMAL_OFFSET
     // A perspective map measures depth along its axis, so a receiver facing the light but not the axis still
     // slopes in depth there: offset for the steeper of the two angles.
-    float cosine = abs(dot(normal, toLight));
+    float cosine = abs(dot(fragment.normal, fragment.toLight));
     if (perspective) {
-        cosine = min(cosine, abs(dot(normal, normalize(vec3(wRow)))));
+        cosine = min(cosine, abs(dot(fragment.normal, normalize(vec3(wRow)))));
     }
-    position += normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
+    position += fragment.normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
 #endif
     vec4 clip = m * vec4(position, 1.0);
-    // Behind a spot light (w <= 0) nothing is mapped; the cone attenuation is zero there anyway.
-    float w = clip.w > 1e-20 ? clip.w : 1e-20;
-    vec3 coord = clip.xyz / w;
+    if (clip.w <= 0.0) {
+        return 1.0; // behind a perspective map's light: nothing is mapped (the light's falloff is zero there)
+    }
+    vec3 coord = clip.xyz / clip.w;
     lookup.coord = coord.xy;
     lookup.texel = coord.xy * gsShadowTexel[slot].x;
     lookup.depth = coord.z - gsShadowDepthBias;
+    if (lookup.depth >= 1.0) {
+        return 1.0; // beyond the map's depth range: nothing can occlude
+    }
     lookup.momentDepth = gsLinearDepth(lookup.depth, gsShadowDepthRange[slot].xy);
-    // Screen derivatives must be taken before any per-pixel branch.
+    vec3 dx = gsShadowDerivative(m, clip, fragment.dPdx);
+    vec3 dy = gsShadowDerivative(m, clip, fragment.dPdy);
+    lookup.coordDx = dx.xy;
+    lookup.coordDy = dy.xy;
     lookup.screenGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
-    lookup.screenGradient = gsReceiverPlaneGradient(dFdxFine(lookup.texel), dFdyFine(lookup.texel),
-                                                    dFdxFine(lookup.depth), dFdyFine(lookup.depth));
+    lookup.screenGradient =
+        gsReceiverPlaneGradient(dx.xy * gsShadowTexel[slot].x, dy.xy * gsShadowTexel[slot].x, dx.z, dy.z);
 #endif
+    lookup.tangentGradient = vec2(0.0);
 #ifdef GS_SHADOW_TANGENT_PLANE
     // The facet's own plane (derivatives of the interpolated position stay within one triangle), not the
     // interpolated normal, which bends across creases: the depths in the map come from facets.
-    vec3 facetNormal = cross(dFdxFine(worldPosition), dFdyFine(worldPosition));
-    facetNormal = dot(facetNormal, normal) < 0.0 ? -facetNormal : facetNormal;
-#endif
-    if (clip.w <= 0.0 || lookup.depth >= 1.0) {
-        return 1.0; // outside the light's depth range: nothing can occlude
-    }
-
-    lookup.tangentGradient = vec2(0.0);
-#ifdef GS_SHADOW_TANGENT_PLANE
-    lookup.tangentGradient =
-        gsTangentPlaneGradient(m, worldPosition, facetNormal, gsShadowTexel[slot].x);
+    vec3 facetNormal = cross(fragment.dPdx, fragment.dPdy);
+    facetNormal = dot(facetNormal, fragment.normal) < 0.0 ? -facetNormal : facetNormal;
+    lookup.tangentGradient = gsTangentPlaneGradient(m, fragment.position, facetNormal, gsShadowTexel[slot].x);
 #endif
     lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
-    lookup.pointGradient = texture(gsShadowGradientMap[slot], lookup.coord).rg;
+    lookup.pointGradient = textureLod(gsShadowGradientMaps, vec3(lookup.coord, float(slot)), 0.0).rg;
 #elif defined(GS_SHADOW_GRADIENT_CENTRAL)
     vec2 texel = lookup.texel;
     lookup.pointGradient =
@@ -162,6 +196,41 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     return gsSaturate(result.visibility);
 }
 
+// Which map of light `lightIndex` was read, for the maps debug view: cascade index or cube face, -1 for none.
+int gsDebugMap = -1;
+
+float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
+    // Screen derivatives must be taken before any per-pixel branch (a quad's fragments may pick other maps).
+    GsShadowFragment fragment =
+        GsShadowFragment(worldPosition, normal, toLight, dFdxFine(worldPosition), dFdyFine(worldPosition));
+    GsShadowLightMaps maps = gsShadowLights[lightIndex];
+    int kind = maps.kind.x;
+    if (kind == GS_SHADOW_LIGHT_CUBE) {
+        int face = gsCubeFace(worldPosition - gsLights[lightIndex].position.xyz);
+        gsDebugMap = gsDebugMap < 0 ? face : gsDebugMap;
+        return gsShadowMapVisibility(face < 4 ? maps.slots[face] : maps.faceSlots[face - 4], fragment);
+    }
+    if (kind == GS_SHADOW_LIGHT_CASCADES) {
+        float depth = dot(gsShadowViewDepth, vec4(worldPosition, 1.0));
+        int count = maps.kind.y;
+        int cascade = gsCascadeIndex(depth, maps.splitFar, count);
+        gsDebugMap = gsDebugMap < 0 ? cascade : gsDebugMap;
+        float visibility = gsShadowMapVisibility(maps.slots[cascade], fragment);
+        if (cascade + 1 < count) {
+            float weight = gsCascadeBlendWeight(depth, maps.splitNear[cascade], maps.splitFar[cascade],
+                                                gsShadowCascadeBlend);
+            if (weight > 0.0) {
+                visibility = mix(visibility, gsShadowMapVisibility(maps.slots[cascade + 1], fragment), weight);
+            }
+        }
+        return visibility;
+    }
+    if (kind == GS_SHADOW_LIGHT_SINGLE) {
+        return gsShadowMapVisibility(maps.slots.x, fragment);
+    }
+    return 1.0;
+}
+
 // Debug views replace the shaded colour (final_color slot).
 void gsShadowDebug(inout vec3 color) {
 #if defined(GS_SHADOW_DEBUG_VISIBILITY)
@@ -180,5 +249,10 @@ void gsShadowDebug(inout vec3 color) {
 #elif defined(GS_SHADOW_DEBUG_KERNEL)
     // Red where the full kernel ran (early-out undecided: a penumbra candidate); visibility in green.
     color = vec3(gsDebugFullKernel ? 1.0 : 0.0, gsDebugVisibility, 0.0);
+#elif defined(GS_SHADOW_DEBUG_MAPS)
+    // Cascade 0..3 or cube face 0..5 as a hue, darkened in shadow; grey where no map was read.
+    const vec3 palette[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),
+                                    vec3(1.0, 0.9, 0.2), vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
+    color = (gsDebugMap < 0 ? vec3(0.5) : palette[gsDebugMap]) * (0.35 + 0.65 * gsDebugVisibility);
 #endif
 }

@@ -319,3 +319,41 @@ vec4 gsMsmDequantize(vec4 quantized, mat4 inverseQuantize) {
 // Pixel shader branching (soft shadows reference): the test taps' hard comparisons decide whether the pixel can
 // be in a penumbra. Returns true when they all agree (fully lit or fully shadowed: no more taps needed).
 bool gsTestTapsAgree(float litCount, float testCount) { return litCount == 0.0f || litCount == testCount; }
+
+// ---- Lights with several maps: cascades of a directional light, the six faces of a point light ----
+
+// Cube face of the direction `d` from a point light: the axis of largest magnitude, +X 0, -X 1, +Y 2, -Y 3,
+// +Z 4, -Z 5 (the order of GL's cube map faces). Ties go to the earlier axis, so every direction has exactly one
+// face; on an edge both faces' maps hold the point (their frustums are widened by a margin, ShadowModule), which
+// keeps the selection's switch invisible.
+int gsCubeFace(vec3 d) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) {
+        return d.x >= 0.0f ? 0 : 1;
+    }
+    if (a.y >= a.z) {
+        return d.y >= 0.0f ? 2 : 3;
+    }
+    return d.z >= 0.0f ? 4 : 5;
+}
+
+// Cascade of a receiver at view depth `depth`: the first whose far split (`splitFar`, ascending, `count` of
+// them) lies beyond it; the last for anything farther.
+int gsCascadeIndex(float depth, vec4 splitFar, int count) {
+    for (int i = 0; i < count - 1; ++i) {
+        if (depth < splitFar[i]) {
+            return i;
+        }
+    }
+    return max(count - 1, 0);
+}
+
+// Weight of the next cascade in the blend band at the far end of a cascade spanning [start, end]: 0 before the
+// band (the last `blend` fraction of the span), rising linearly to 1 at `end`.
+float gsCascadeBlendWeight(float depth, float start, float end, float blend) {
+    float band = blend * (end - start);
+    if (!(band > 0.0f)) {
+        return 0.0f;
+    }
+    return gsSaturate((depth - (end - band)) / band);
+}

@@ -19,7 +19,7 @@ GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
         vec2 centre = floor(lookup.texel) + 0.5;
 #endif
         float reference = lookup.depth + dot(centre - lookup.texel, lookup.tangentGradient);
-        sum += texture(gsShadowMap[slot], vec3(centre * gsShadowTexel[slot].y, gsShadowReference(reference)));
+        sum += gsShadowCompare(slot, centre * gsShadowTexel[slot].y, gsShadowReference(reference));
     }
     return GsShadowSample(sum / float(max(count, 1)), 1.0, 0.0, lookup.tangentGradient, false);
 }

@@ -9,7 +9,7 @@ vec4 gsShadowStore(float depth) { return gsEvsmMoments(depth, gsShadowTechniqueP
 #ifdef GS_SHADOW_EVSM
 GsShadowSample gsShadowSample_Evsm(GsShadowLookup lookup) {
     vec2 exponents = gsShadowTechniqueParameters.xy;
-    vec4 moments = texture(gsShadowMap[lookup.slot], lookup.coord);
+    vec4 moments = gsShadowMoments(lookup);
     float visibility =
         gsEvsmVisibility(moments, lookup.momentDepth, exponents, gsShadowMinimumVariance, gsShadowBleedingReduction);
     // The shadow-map view shows the filtered depth the positive warp's mean stands for.

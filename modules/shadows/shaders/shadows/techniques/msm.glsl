@@ -12,7 +12,7 @@ vec4 gsShadowStore(float depth) {
 
 #ifdef GS_SHADOW_MSM
 GsShadowSample gsShadowSample_Msm(GsShadowLookup lookup) {
-    vec4 moments = texture(gsShadowMap[lookup.slot], lookup.coord);
+    vec4 moments = gsShadowMoments(lookup);
 #ifdef GS_SHADOW_MSM_QUANTIZED
     moments = gsMsmDequantize(moments, gsShadowMsmDequantize);
 #endif

@@ -19,8 +19,8 @@ GsShadowSample gsShadowSample_Jittered(GsShadowLookup lookup) {
         }
 #endif
         vec4 offsets = (texelFetch(gsShadowJitter, ivec3(tile, pair), 0) * 2.0 - 1.0) * gsShadowJitterRadius;
-        lit += texture(gsShadowMap[slot], vec3((texel + offsets.xy) * gsShadowTexel[slot].y, reference));
-        lit += texture(gsShadowMap[slot], vec3((texel + offsets.zw) * gsShadowTexel[slot].y, reference));
+        lit += gsShadowCompare(slot, (texel + offsets.xy) * gsShadowTexel[slot].y, reference);
+        lit += gsShadowCompare(slot, (texel + offsets.zw) * gsShadowTexel[slot].y, reference);
         taken += 2;
     }
     GsShadowSample result = gsShadowResult(lit / float(max(taken, 1)), 1.0, lookup);

@@ -5,7 +5,7 @@ GsShadowSample gsShadowSample_Pcf(GsShadowLookup lookup) {
     float sum = 0.0;
     for (int i = 0; i < gsTapCount; ++i) {
         vec2 tap = (lookup.texel + rotation * gsTapOffsets[i]) * gsShadowTexel[lookup.slot].y;
-        sum += texture(gsShadowMap[lookup.slot], vec3(tap, gsShadowReference(lookup.depth)));
+        sum += gsShadowCompare(lookup.slot, tap, gsShadowReference(lookup.depth));
     }
     return gsShadowResult(sum / float(max(gsTapCount, 1)), 1.0, lookup);
 }

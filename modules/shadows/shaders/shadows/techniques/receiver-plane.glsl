@@ -13,7 +13,7 @@ GsShadowSample gsShadowSample_ReceiverPlane(GsShadowLookup lookup) {
     for (int i = 0; i < gsTapCount; ++i) {
         vec2 centre = floor(texel + rotation * gsTapOffsets[i]) + 0.5;
         float tapDepth = gsReceiverPlaneTapDepth(depth, centre - texel, screenGradient, clampBias);
-        sum += texture(gsShadowMap[slot], vec3(centre * gsShadowTexel[slot].y, gsShadowReference(tapDepth)));
+        sum += gsShadowCompare(slot, centre * gsShadowTexel[slot].y, gsShadowReference(tapDepth));
     }
     return GsShadowSample(sum / float(max(gsTapCount, 1)), 1.0, 0.0, screenGradient, false);
 #else
@@ -23,7 +23,7 @@ GsShadowSample gsShadowSample_ReceiverPlane(GsShadowLookup lookup) {
     vec2 footprint = floor(texel - 0.5);
     vec2 weights = texel - 0.5 - footprint;
     vec2 gatherAt = (footprint + 1.0) * gsShadowTexel[slot].y;
-    vec4 gathered = textureGather(gsShadowMap[slot], gatherAt);
+    vec4 gathered = gsShadowGather(slot, gatherAt);
     // Gather order x (-,+), y (+,+), z (+,-), w (-,-): distances from the pixel to each texel centre.
     vec2 toCentre0 = vec2(-weights.x, 1.0 - weights.y);
     vec2 toCentre1 = vec2(1.0 - weights.x, 1.0 - weights.y);

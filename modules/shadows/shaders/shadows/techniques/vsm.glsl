@@ -6,7 +6,7 @@ vec2 gsShadowStore(float depth) { return vec2(depth, depth * depth); }
 
 #ifdef GS_SHADOW_VSM
 GsShadowSample gsShadowSample_Vsm(GsShadowLookup lookup) {
-    vec2 moments = texture(gsShadowMap[lookup.slot], lookup.coord).rg;
+    vec2 moments = gsShadowMoments(lookup).rg;
     float visibility =
         gsChebyshevVisibility(moments, lookup.momentDepth, gsShadowMinimumVariance, gsShadowBleedingReduction);
     return gsShadowResult(visibility, moments.x, lookup);

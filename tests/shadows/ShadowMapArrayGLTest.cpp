@@ -1,7 +1,7 @@
-// ShadowMapTarget: a light's render targets in the formats of the plan.
+// ShadowMapArray: the frame's shadow maps as layers, in the formats of the plan.
 #include "../engine/GLTestContext.h"
 
-#include "ShadowMapTarget.h"
+#include "ShadowMapArray.h"
 
 #include <gtest/gtest.h>
 
@@ -17,42 +17,44 @@ GLint textureLevelParameter(GLuint texture, GLint level, GLenum parameter) {
 
 } // namespace
 
-TEST(ShadowMapTargetGLTest, DepthOnlyMapsHoldTheDepthFormatAlone) {
+TEST(ShadowMapArrayGLTest, DepthOnlyMapsHoldTheDepthFormatAlone) {
     glTestContext();
     ShadowSettings settings;
     settings.technique = ShadowTechnique::HardCompare;
     settings.depthFormat = DepthFormat::D16;
     const ShadowPlan plan = ShadowPlan::resolve(settings);
-    const ShadowMapTarget target(128, plan);
+    const ShadowMapArray target(128, 3, plan);
     EXPECT_FALSE(target.gradient || target.moments);
     EXPECT_EQ(target.sampledTexture(), target.depth.id());
     EXPECT_EQ(textureLevelParameter(target.depth.id(), 0, GL_TEXTURE_INTERNAL_FORMAT), GL_DEPTH_COMPONENT16);
-    EXPECT_EQ(target.bytes(plan), 128u * 128u * 2u);
+    EXPECT_EQ(textureLevelParameter(target.depth.id(), 0, GL_TEXTURE_DEPTH), 3);
+    EXPECT_EQ(target.layers(), 3);
+    EXPECT_EQ(target.bytes(plan), 3u * 128u * 128u * 2u);
 }
 
-TEST(ShadowMapTargetGLTest, StoredGradientsAddAnRgTarget) {
+TEST(ShadowMapArrayGLTest, StoredGradientsAddAnRgTarget) {
     glTestContext();
     ShadowSettings settings;
     settings.technique = ShadowTechnique::Gsm;
     settings.gradientSource = GradientSource::StoredDerivatives;
     const ShadowPlan plan = ShadowPlan::resolve(settings);
-    const ShadowMapTarget target(64, plan);
+    const ShadowMapArray target(64, 1, plan);
     ASSERT_TRUE(target.gradient);
     EXPECT_EQ(target.gradient->internalFormat(), static_cast<GLenum>(GL_RG32F));
     EXPECT_EQ(target.bytes(plan), 64u * 64u * (4u + 8u));
 }
 
-TEST(ShadowMapTargetGLTest, MomentsAreMipmappedInThePlansFormatAndSampled) {
+TEST(ShadowMapArrayGLTest, MomentsAreMipmappedInThePlansFormatAndSampled) {
     glTestContext();
     ShadowSettings settings;
     settings.technique = ShadowTechnique::Msm;
     settings.msmQuantize16 = true;
     const ShadowPlan plan = ShadowPlan::resolve(settings);
-    const ShadowMapTarget target(64, plan);
+    const ShadowMapArray target(64, 2, plan);
     ASSERT_TRUE(target.moments && target.blurTemporary);
     EXPECT_EQ(target.moments->internalFormat(), static_cast<GLenum>(GL_RGBA16));
     EXPECT_EQ(target.sampledTexture(), target.moments->id());
     EXPECT_EQ(textureLevelParameter(target.moments->id(), 6, GL_TEXTURE_WIDTH), 1); // 64 .. 1: seven levels
-    // Depth, the mip chain (4/3 of level 0) and the blur's temporary level.
-    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 8u * 4u / 3u + 64u * 64u * 8u);
+    // Per layer the depth and the mip chain (4/3 of level 0); one temporary layer for the blur.
+    EXPECT_EQ(target.bytes(plan), 2u * (64u * 64u * 4u + 64u * 64u * 8u * 4u / 3u) + 64u * 64u * 8u);
 }

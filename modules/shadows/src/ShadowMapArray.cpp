@@ -1,0 +1,64 @@
+#include "ShadowMapArray.h"
+
+namespace shadows {
+
+namespace {
+
+GLsizei mipLevels(int resolution) {
+    GLsizei levels = 1;
+    while ((resolution >> levels) > 0) {
+        ++levels;
+    }
+    return levels;
+}
+
+} // namespace
+
+ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& plan)
+    : depth(plan.depthFormat, glm::ivec2(resolution), layers) {
+    const glm::ivec2 size(resolution);
+    if (plan.storesGradient) {
+        gradient.emplace(GL_RG32F, size, layers);
+    } else if (plan.momentsFormat != 0) {
+        // Moments are filtered: blurred at level 0, then mipmapped for trilinear lookups.
+        moments.emplace(plan.momentsFormat, size, layers, mipLevels(resolution));
+        blurTemporary.emplace(plan.momentsFormat, size, 1);
+        blurFramebuffer.emplace("shadow moments blur");
+        blurFramebuffer->attach(GL_COLOR_ATTACHMENT0, *blurTemporary, 0);
+        blurFramebuffer->setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        blurFramebuffer->check();
+    }
+    framebuffers.reserve(static_cast<std::size_t>(layers));
+    for (int layer = 0; layer < layers; ++layer) {
+        engine::gl::Framebuffer& framebuffer = framebuffers.emplace_back("shadow map");
+        framebuffer.attach(GL_DEPTH_ATTACHMENT, depth, layer);
+        if (gradient || moments) {
+            framebuffer.attach(GL_COLOR_ATTACHMENT0, gradient ? *gradient : *moments, layer);
+            framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        } else {
+            framebuffer.setDrawBuffers({});
+        }
+        framebuffer.check();
+    }
+}
+
+std::size_t ShadowMapArray::bytes(const ShadowPlan& plan) const {
+    const auto side = static_cast<std::size_t>(depth.size().x);
+    const std::size_t texels = side * side;
+    const auto count = static_cast<std::size_t>(layers());
+    std::size_t layer = texels * (plan.depthBytesPerTexel + (gradient ? 8 : 0));
+    if (moments) {
+        layer += texels * plan.momentBytesPerTexel * 4 / 3; // the mip chain: 4/3 of level 0
+    }
+    std::size_t total = count * layer;
+    if (moments) {
+        total += texels * plan.momentBytesPerTexel; // the blur's one temporary layer
+    }
+    return total;
+}
+
+GLuint ShadowMapArray::sampledTexture() const {
+    return moments ? moments->id() : depth.id();
+}
+
+} // namespace shadows
