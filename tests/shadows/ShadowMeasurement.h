@@ -17,7 +17,8 @@ struct ShadowMeasurement {
     std::vector<glm::vec4> position; // w = 1 where a surface covers the pixel
     std::vector<glm::vec3> normal;
     std::vector<float> visibility;
-    float texelWorldSize = 0.0f; // of light 0's map (orthographic maps)
+    float texelWorldSize = 0.0f;                       // of light 0's map (orthographic maps)
+    std::vector<shadows::LightProjection> projections; // every map of light 0 (cascades near to far, faces)
 
     static ShadowMeasurement render(const engine::Scene& scene, engine::EntityId camera,
                                     const shadows::ShadowSettings& settings, glm::ivec2 size) {
@@ -45,6 +46,7 @@ struct ShadowMeasurement {
         if (const auto projection = module->lightProjection(0)) {
             m.texelWorldSize = projection->texelScale;
         }
+        m.projections = module->lightProjections(0);
         const std::size_t count = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
         for (std::size_t i = 0; i < count; ++i) {
             m.position.emplace_back(positions[4 * i], positions[4 * i + 1], positions[4 * i + 2],
