@@ -102,3 +102,21 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShadowBenchGLTest,
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
+
+TEST(ShimmerGLTest, SnappedCascadesDoNotShimmerAndUnsnappedOnesDo) {
+    const engine::HeadlessContext& context = glTestContext();
+    BenchOptions options;
+    options.size = {160, 120};
+    options.timing = false;
+    options.shimmerFrames = 4;
+    const ShadowBench bench(context, options);
+    const auto scene = bench.prepare("knob", std::filesystem::path(CONTENT_DIR) / "scenes" / "knob.gltf");
+    shadows::ShadowSettings settings;
+    settings.cascadeCount = 3;
+    settings.resolution = 512;
+    EXPECT_EQ(bench.measureShimmer(*scene, settings), 0.0);
+    settings.texelSnapping = false;
+    const double unsnapped = bench.measureShimmer(*scene, settings);
+    std::cout << "[ measured ] knob, 3 unsnapped cascades: shimmer " << unsnapped << "\n";
+    EXPECT_GT(unsnapped, 0.0);
+}

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace shadowbench {
@@ -59,6 +60,34 @@ double median(std::vector<float> values) {
     std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
                      values.end());
     return values[values.size() / 2];
+}
+
+/// The world size of a shadow texel at each receiver: the finest of `maps` that holds it (orthographic: the
+/// map's texel; perspective: its texel scale times the distance along its axis).
+std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
+                                      const std::vector<std::uint8_t>& receivers,
+                                      const std::vector<shadows::LightProjection>& maps) {
+    std::vector<float> sizes;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        if (!receivers[i]) {
+            continue;
+        }
+        float finest = std::numeric_limits<float>::max();
+        for (const shadows::LightProjection& map : maps) {
+            const glm::vec4 s = map.worldToShadow * glm::vec4(positions[i], 1.0f);
+            if (!(s.w > 0.0f)) {
+                continue;
+            }
+            const glm::vec3 coord = glm::vec3(s) / s.w;
+            if (coord.x >= 0.0f && coord.x <= 1.0f && coord.y >= 0.0f && coord.y <= 1.0f && coord.z <= 1.0f) {
+                finest = std::min(finest, map.texelScale * (map.perspective ? s.w : 1.0f));
+            }
+        }
+        if (finest < std::numeric_limits<float>::max()) {
+            sizes.push_back(finest);
+        }
+    }
+    return sizes;
 }
 
 } // namespace
@@ -183,6 +212,9 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
         }
         result.fullKernelFraction = covered ? static_cast<double>(full) / static_cast<double>(covered) : 0.0;
     }
+    if (options_.shimmerFrames > 0) {
+        result.shimmer = measureShimmer(scene, config.settings);
+    }
     return result;
 }
 
@@ -213,21 +245,10 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
     for (std::size_t i = 0; i < pixels.size(); ++i) {
         visibility[i] = pixels[i].x;
     }
-    // The band is a number of shadow texels; convert to pixels with the median texel and pixel footprints.
-    float texelWorld = 0.0f;
-    if (const auto projection = module.lightProjection(scene.light_.index)) {
-        texelWorld = projection->texelScale;
-        if (projection->perspective) {
-            std::vector<float> distances;
-            for (std::size_t i = 0; i < scene.positions_.size(); ++i) {
-                if (scene.receivers_[i]) {
-                    distances.push_back(
-                        glm::dot(scene.positions_[i] - scene.light_.position, scene.light_.direction));
-                }
-            }
-            texelWorld *= static_cast<float>(median(distances));
-        }
-    }
+    // The band is a number of shadow texels; convert to pixels with the median texel and pixel footprints. A
+    // receiver's texel is that of the finest map holding it (a light's cascades and cube faces differ).
+    const float texelWorld = static_cast<float>(median(
+        receiverTexelSizes(scene.positions_, scene.receivers_, module.lightProjections(scene.light_.index))));
     const int bandPixels = scene.pixelWorldSize_ > 0.0f
                                ? std::clamp(static_cast<int>(std::ceil(options_.bandTexels * texelWorld /
                                                                        scene.pixelWorldSize_)),
@@ -335,7 +356,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
            "concave_darkening,mae,rmse,receivers,lit,shadowed,band,concave,band_pixels,shadow_ms_median,"
            "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
            "full_kernel_fraction,frame_ms_median,peer,edge_true_to_rendered_mean,edge_true_to_rendered_p95,"
-           "edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,rendered_edge_pixels\n";
+           "edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,rendered_edge_pixels,"
+           "shimmer\n";
     for (const BenchResult& r : results) {
         const shadows::ShadowSettings& s = r.config.settings;
         const ShadowMetrics& m = r.metrics;
@@ -350,7 +372,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << r.fullKernelFraction << ',' << r.frame.median << ',' << r.peerClass << ','
             << m.edges.trueToRendered.mean << ',' << m.edges.trueToRendered.percentile95 << ','
             << m.edges.renderedToTrue.mean << ',' << m.edges.renderedToTrue.percentile95 << ','
-            << m.edges.trueToRendered.count << ',' << m.edges.renderedToTrue.count << '\n';
+            << m.edges.trueToRendered.count << ',' << m.edges.renderedToTrue.count << ',' << r.shimmer
+            << '\n';
     }
     return csv.str();
 }
@@ -408,6 +431,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"peerUnlitReceivers", r.peerUnlitReceivers},
              {"shadowBytes", r.shadowBytes},
              {"fullKernelFraction", r.fullKernelFraction},
+             {"shimmer", r.shimmer},
              {"image", r.shadedImage.string()}});
     }
     document["results"] = list;

@@ -34,6 +34,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --size WxH            image size                                          [640x480]
   --frames N            timed frames per configuration                      [5]
   --accuracy-only       measure accuracy only, no timing (times are -1)
+  --shimmer N           also measure shimmer: the maps' fit moves a third of a texel per frame for N
+                        frames while the camera stays; the fraction of receiver pixels whose visibility
+                        changes by more than 0.5 between frames (0 for snapped cascades)
   --defaults            each technique once, at its defaults (ignores --taps, --radius, --resolutions,
                         --formats); rows are labelled with the technique's name
   --light-sweep AZ:EL   point each scene's shadow-casting light from every azimuth x elevation (degrees,
@@ -159,6 +162,8 @@ Options parse(int argc, char** argv) {
             options.bench.size = cli::sizeIn("--size", value(), 16, 4096);
         } else if (arg == "--frames") {
             options.bench.frames = cli::integerIn("--frames", value(), 1, 1000);
+        } else if (arg == "--shimmer") {
+            options.bench.shimmerFrames = cli::integerIn("--shimmer", value(), 1, 1000);
         } else if (arg == "--defaults") {
             options.defaults = true;
         } else if (arg == "--accuracy-only") {
@@ -302,8 +307,11 @@ int main(int argc, char** argv) {
                 std::cout << "[" << results.size() << "/" << total << "] " << scene->name() << " "
                           << config.label << ": acne " << std::setprecision(3) << m.acneRate << ", leak "
                           << m.leakRate << ", darkening " << m.darkening << ", edges "
-                          << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean
-                          << " px, shadow " << results.back().shadowPass.median << " ms, lighting "
+                          << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px, "
+                          << (results.back().shimmer >= 0.0
+                                  ? "shimmer " + std::to_string(results.back().shimmer) + ", "
+                                  : std::string())
+                          << "shadow " << results.back().shadowPass.median << " ms, lighting "
                           << results.back().lightingPass.median << " ms; " << std::fixed
                           << std::setprecision(1) << seconds << std::defaultfloat << " s\n"
                           << std::flush;

@@ -52,6 +52,10 @@ struct BenchResult {
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
     /// candidates); negative for every other configuration.
     double fullKernelFraction = -1.0;
+    /// Fraction of receiver pixels whose visibility changes by more than 0.5 between consecutive frames while
+    /// the view the maps are fitted to moves in sub-texel steps and the observer stays (measureShimmer);
+    /// negative when not measured.
+    double shimmer = -1.0;
     std::filesystem::path shadedImage;
     /// The shaded frame (also written to shadedImage), for side-by-side sheets.
     engine::Image shaded;
@@ -96,6 +100,8 @@ struct BenchOptions {
     int softSamplesPerAxis = 0;
     /// Soft ground truth: light radius (sun: angular radius in radians; spot: world units). Default 0.01.
     float softRadius = 0.01f;
+    /// Frames of the shimmer measurement (measureShimmer); 0 does not measure it. Default 0.
+    int shimmerFrames = 0;
     /// Folder for the images (classification, error heat map, shaded). Default "bench".
     std::filesystem::path imageFolder = "bench";
 };
@@ -148,6 +154,14 @@ public:
     /// boundary band of `bandPixels`.
     [[nodiscard]] Accuracy measureVisibility(const BenchScene& scene, std::vector<float> visibility,
                                              int bandPixels) const;
+
+    /// @brief Shimmer of `settings` on `scene`: the maps are fitted to a view that starts at the camera and
+    /// moves a third of the light's first map texel per frame (options().shimmerFrames frames, along a fixed
+    /// oblique direction), while the image is drawn from the still camera; the fraction of receiver pixels
+    /// whose visibility changes by more than 0.5 from one frame to the next, over all frame pairs. Snapped
+    /// (stable) fits give 0: their maps do not change.
+    [[nodiscard]] double measureShimmer(const BenchScene& scene,
+                                        const shadows::ShadowSettings& settings) const;
 
     /// @brief The scene drawn without shadows: counts and whole-frame times.
     [[nodiscard]] SceneCost measureCost(const BenchScene& scene) const;
