@@ -41,7 +41,7 @@ glm::vec2 evsmExponents(const ShadowSettings& settings) {
 const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardCompare,
      .name = "hard",
-     .summary = "one hardware comparison (sampler2DShadow, NEAREST), no bias unless `constantBiasTexels` is "
+     .summary = "one hardware comparison (NEAREST), no bias unless `constantBiasTexels` is "
                 "set: the naive reproduction of acne",
      .reference = "Williams 1978",
      .defines = {"GS_SHADOW_SINGLE_COMPARE"},
@@ -54,7 +54,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .offsetsCasters = true},
     {.technique = T::HardwarePcf,
      .name = "hw-pcf",
-     .summary = "hardware 2×2 bilinear PCF (sampler2DShadow, LINEAR)",
+     .summary = "hardware 2×2 bilinear PCF (LINEAR)",
      .sampler = S::CompareLinear,
      .defines = {"GS_SHADOW_SINGLE_COMPARE"},
      .footprintTexels = bilinearReach,
