@@ -22,7 +22,7 @@ echo "demo: every technique on knob against the ray-traced truth (gs-shadowbench
 
 render=./build/bin/gs-render
 mapfile -t techniques < <("$render" --list-techniques)
-scenes=(torus bowl thin-shell crease-cube grazing-plane spheres)
+scenes=(torus bowl thin-shell crease-cube grazing-plane spheres room outdoor)
 shopt -s nullglob # no corpus (assimp missing): nothing to render
 models=(corpus/*.glb)
 steps=$((${#techniques[@]} + ${#scenes[@]} + ${#models[@]}))

@@ -29,12 +29,13 @@
 
 const int GS_LIGHT_DIRECTIONAL = 0;
 const int GS_LIGHT_SPOT = 1;
+const int GS_LIGHT_POINT = 2;
 
 struct GsLight {
     vec4 colorIntensity; // rgb linear colour, a intensity
-    vec4 position;       // xyz world position, w light type
-    vec4 direction;      // xyz unit direction the light shines along
-    vec4 spot;           // x cos(inner), y cos(outer), z range (0 = unlimited)
+    vec4 position;       // xyz world position (spot and point), w light type (GS_LIGHT_*)
+    vec4 direction;      // xyz unit direction the light shines along (directional and spot)
+    vec4 spot;           // x cos(inner), y cos(outer) (spot); z range (spot and point; 0 = unlimited)
 };
 
 layout(std140, binding = 0) uniform FrameBlock {

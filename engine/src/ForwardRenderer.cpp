@@ -34,11 +34,24 @@ struct Vertex {
     glm::vec3 normal;
 };
 
+/// The GS_LIGHT_* constant of shaders/frame.glsl that position.w carries for `type`.
+float shaderLightType(LightType type) {
+    switch (type) {
+    case LightType::Directional:
+        return 0.0f;
+    case LightType::Spot:
+        return 1.0f;
+    case LightType::Point:
+        return 2.0f;
+    }
+    throw Error("render: unknown light type " + std::to_string(static_cast<int>(type)));
+}
+
 } // namespace
 
 ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& programs)
     : programs_(programs), flatNormalsFlag_(layout.flag("GS_FLAT_NORMALS")),
-      spotLightsFlag_(layout.flag("GS_HAS_SPOT_LIGHTS")),
+      positionalLightsFlag_(layout.flag("GS_HAS_POSITIONAL_LIGHTS")),
       worldPositionFlag_(layout.flag("GS_OUTPUT_WORLD_POSITION")),
       worldNormalFlag_(layout.flag("GS_OUTPUT_WORLD_NORMAL")),
       lightCountFlags_{layout.flag("GS_LIGHT_COUNT_BIT0"), layout.flag("GS_LIGHT_COUNT_BIT1"),
@@ -74,7 +87,7 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
     block.viewProjection = frame.viewProjection;
     block.cameraPosition = glm::vec4(frame.cameraPosition, 1.0f);
     block.ambient = glm::vec4(environment.ambient, 0.0f);
-    sceneHasSpotLights_ = false;
+    sceneHasPositionalLights_ = false;
     std::size_t skipped = 0;
     scene.forEach([&](EntityId id, const Entity& entity) {
         if (!entity.light) {
@@ -91,11 +104,11 @@ FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, co
         light.light = *entity.light;
         light.position = glm::vec3(world[3]);
         light.direction = glm::normalize(-glm::vec3(world[2]));
-        const bool spot = light.light.type == LightType::Spot;
-        sceneHasSpotLights_ = sceneHasSpotLights_ || spot;
+        // Spot and point lights shine from a position: only then does the shader need their code.
+        sceneHasPositionalLights_ = sceneHasPositionalLights_ || light.light.type != LightType::Directional;
         block.lights[light.index] = {
             glm::vec4(light.light.color, light.light.intensity),
-            glm::vec4(light.position, spot ? 1.0f : 0.0f), glm::vec4(light.direction, 0.0f),
+            glm::vec4(light.position, shaderLightType(light.light.type)), glm::vec4(light.direction, 0.0f),
             glm::vec4(std::cos(light.light.innerConeAngle), std::cos(light.light.outerConeAngle),
                       light.light.range, 0.0f)};
         frame.lights.push_back(light);
@@ -214,7 +227,7 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
                                         : output == OutputMode::WorldNormal ? worldNormalFlag_
                                                                             : 0;
     const ShaderVariantKey sceneBits =
-        (sceneHasSpotLights_ ? spotLightsFlag_ : 0) | outputBits | lightCountBits_;
+        (sceneHasPositionalLights_ ? positionalLightsFlag_ : 0) | outputBits | lightCountBits_;
     const FrameStats drawn =
         drawMeshes(frame.scene, frame.viewProjection, [&](EntityId id, const glm::mat4& model) {
             if (depthOnly) {

@@ -63,10 +63,15 @@ void aimLight(Scene& scene, EntityId light, const LightAngles& angles) {
     const Aabb bounds = meshBounds(scene);
     const glm::vec3 centre = bounds.empty() ? glm::vec3(0.0f) : (bounds.min + bounds.max) * 0.5f;
     const float radius = bounds.empty() ? 1.0f : std::max(glm::length(bounds.max - bounds.min) * 0.5f, 1e-6f);
+    // A directional light only turns (its position is irrelevant); a point light has no axis, so it swings
+    // around the meshes' centre at its own distance from it; a spot swings around the point of its axis
+    // nearest the centre. A light in front of nothing (or at the centre) gets twice the meshes' radius.
     const float along = glm::dot(centre - position, forward);
-    const float distance = along > radius * 0.1f ? along : radius * 2.0f;
-    const glm::vec3 pivot =
-        entity.light->type == LightType::Directional ? centre : position + forward * distance;
+    const float fromCentre = glm::length(position - centre);
+    const bool point = entity.light->type == LightType::Point;
+    const float distance = point ? (fromCentre > radius * 0.1f ? fromCentre : radius * 2.0f)
+                                 : (along > radius * 0.1f ? along : radius * 2.0f);
+    const glm::vec3 pivot = entity.light->type == LightType::Spot ? position + forward * distance : centre;
     setWorldTransform(scene, light, Transform::lookAt(pivot + towardsLight(angles) * distance, pivot));
 }
 

@@ -7,6 +7,8 @@
 
 #include <content/ContentError.h>
 
+#include <engine/Components.h>
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -226,11 +228,24 @@ void ControlPanel::drawLightAndCamera(Session& session) {
             std::clamp(angles.elevation, ParameterTable::kElevation.min, ParameterTable::kElevation.max);
         settings.light = angles;
     }
-    ImGui::Text("%s light%s", session.scene().lightType() == engine::LightType::Spot ? "spot" : "directional",
-                settings.light ? "" : " as in the file");
+    std::vector<std::string_view> typeNames;
+    int typeIndex = 0;
+    for (std::size_t i = 0; i < engine::kLightTypes.size(); ++i) {
+        typeNames.emplace_back(engine::toString(engine::kLightTypes[i]));
+        typeIndex = engine::kLightTypes[i] == session.scene().lightType() ? static_cast<int>(i) : typeIndex;
+    }
+    if (combo("light type", typeIndex, typeNames)) {
+        session.scene().setLightType(engine::kLightTypes[static_cast<std::size_t>(typeIndex)]);
+        // A converted light is placed by the angles: the file's transform of a sun may sit anywhere.
+        settings.light = angles;
+    }
+    tooltip("The file's first light, or a conversion of it: a spot gets a cone just covering the scene, and "
+            "a sun's intensity is scaled by the distance squared, so the scene's centre stays as bright.");
+    ImGui::Text("light %s", settings.light ? "at the angles above" : "as in the file");
     ImGui::SameLine();
     if (ImGui::Button("file's light")) {
         settings.light.reset();
+        session.scene().setLightType(session.scene().fileLightType());
     }
     const OrbitCamera camera = settings.camera.value_or(session.scene().fileOrbit());
     ImGui::Text("camera yaw %.1f, pitch %.1f, distance %.2f%s", static_cast<double>(camera.yaw),

@@ -71,12 +71,21 @@ SandboxScene::SandboxScene(const std::filesystem::path& path, int level)
     fileLight_ = scene.entity(light_).transform;
     fileLightComponent_ = *scene.entity(light_).light;
 
+    // The orbit the light angles place the light on (as engine::aimLight): a point light has no axis, so it
+    // orbits the meshes' centre at its distance from it; a spot or sun orbits the point of its axis nearest
+    // the centre.
     const glm::mat4 lightWorld = scene.worldMatrix(light_);
     const glm::vec3 lightPosition = position(lightWorld);
-    const glm::vec3 lightForward = forward(lightWorld);
-    const float along = glm::dot(centre_ - lightPosition, lightForward);
-    lightDistance_ = along > radius * 0.1f ? along : radius * 2.0f;
-    lightPivot_ = lightPosition + lightForward * lightDistance_;
+    if (fileLightComponent_.type == engine::LightType::Point) {
+        const float fromCentre = glm::length(lightPosition - centre_);
+        lightDistance_ = fromCentre > radius * 0.1f ? fromCentre : radius * 2.0f;
+        lightPivot_ = centre_;
+    } else {
+        const glm::vec3 lightForward = forward(lightWorld);
+        const float along = glm::dot(centre_ - lightPosition, lightForward);
+        lightDistance_ = along > radius * 0.1f ? along : radius * 2.0f;
+        lightPivot_ = lightPosition + lightForward * lightDistance_;
+    }
 }
 
 engine::LightType SandboxScene::lightType() const {
@@ -88,7 +97,13 @@ SandboxSettings::LightAngles SandboxScene::fileLightAngles() const {
     const engine::Entity& entity = loaded_.scene.entity(light_);
     const glm::mat4 parent =
         entity.parent == engine::kNoEntity ? glm::mat4(1.0f) : loaded_.scene.worldMatrix(entity.parent);
-    const glm::vec3 toLight = -forward(parent * fileLight_.matrix());
+    const glm::mat4 fileWorld = parent * fileLight_.matrix();
+    // A point light's direction is where it sits seen from its orbit's centre; the others shine along -Z.
+    const glm::vec3 offset = position(fileWorld) - lightPivot_;
+    const glm::vec3 toLight =
+        fileLightComponent_.type == engine::LightType::Point && glm::length(offset) > 0.0f
+            ? glm::normalize(offset)
+            : -forward(fileWorld);
     SandboxSettings::LightAngles angles;
     angles.elevation = std::clamp(glm::degrees(std::asin(std::clamp(toLight.y, -1.0f, 1.0f))),
                                   ParameterTable::kElevation.min, ParameterTable::kElevation.max);
@@ -127,15 +142,21 @@ void SandboxScene::setLightType(engine::LightType type) {
     engine::LightComponent light = fileLightComponent_;
     if (type != light.type) {
         light.type = type;
+        // Directional intensity is irradiance, spot and point intensity is irradiance at distance 1: scaled
+        // by distance² between them, the meshes' centre stays as bright. Spot and point share theirs (and
+        // range).
+        const bool wasDirectional = fileLightComponent_.type == engine::LightType::Directional;
+        const float distanceSquared = lightDistance_ * lightDistance_;
+        if (type == engine::LightType::Directional) {
+            light.intensity = fileLightComponent_.intensity / distanceSquared;
+        } else if (wasDirectional) {
+            light.intensity = fileLightComponent_.intensity * distanceSquared;
+        }
         if (type == engine::LightType::Spot) {
             // A cone around the meshes' bounding sphere seen from the light's orbit distance, 10 % to spare,
             // and at most 75° so the shadow map's perspective stays well conditioned.
             light.outerConeAngle = std::min(1.1f * std::atan(radius_ / lightDistance_), glm::radians(75.0f));
             light.innerConeAngle = 0.8f * light.outerConeAngle;
-            light.range = 0.0f;
-            light.intensity = fileLightComponent_.intensity * lightDistance_ * lightDistance_;
-        } else {
-            light.intensity = fileLightComponent_.intensity / (lightDistance_ * lightDistance_);
         }
     }
     *loaded_.scene.entity(light_).light = light;

@@ -27,6 +27,8 @@ public:
     [[nodiscard]] const engine::Scene& scene() const { return loaded_.scene; }
     [[nodiscard]] engine::EntityId camera() const { return camera_; }
     [[nodiscard]] engine::LightType lightType() const;
+    /// @brief The type of the file's first light (lightType() differs after setLightType()).
+    [[nodiscard]] engine::LightType fileLightType() const { return fileLightComponent_.type; }
     /// @brief Loader warnings plus what the sandbox added.
     [[nodiscard]] const std::vector<std::string>& warnings() const { return loaded_.warnings; }
     /// @brief Triangles of every mesh.
@@ -40,14 +42,17 @@ public:
 
     /// @brief Points the first light from `light` (or restores the file's) and places the camera at `camera`
     /// (or restores the file's). A spot light keeps its distance to the point its axis passes closest to the
-    /// meshes' centre, so it swings around what it lit.
+    /// meshes' centre, so it swings around what it lit; a file's point light swings around the meshes' centre
+    /// at its distance from it.
     void apply(const std::optional<SandboxSettings::LightAngles>& light,
                const std::optional<OrbitCamera>& camera);
 
     /// @brief Makes the first light a `type` light: the file's light when the file has that type, otherwise a
-    /// conversion of it. A spot made from a directional light has its cone just covering the meshes and its
-    /// intensity scaled by distance², so the centre stays as bright; place it with apply() and light angles
-    /// (the file's transform of a directional light may sit anywhere). The soak run cycles light types so.
+    /// conversion of it. A spot or point light made from a directional light has its intensity scaled by
+    /// distance² (and a directional one made from them divided), so the centre stays as bright; a spot made
+    /// from another type gets a cone just covering the meshes. Place a converted light with apply() and light
+    /// angles (the file's transform of a directional light may sit anywhere). The soak run cycles light types
+    /// so, and so does the control panel's light type choice.
     void setLightType(engine::LightType type);
 
 private:

@@ -33,10 +33,6 @@ std::string fixed(double value, int decimals) {
     return text;
 }
 
-const char* lightTypeName(engine::LightType type) {
-    return type == engine::LightType::Spot ? "spot" : "directional";
-}
-
 } // namespace
 
 SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErrors, double rssToleranceMiB) {
@@ -96,7 +92,8 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
         for (const std::string& scene : line.soakScenes) {
             // A fresh load each cycle: the previous scene's meshes must be released, not accumulated.
             session.loadScene(scene, line.settings.level);
-            // Light angles place a spot made from a directional light on the light's orbit (setLightType).
+            // Light angles place a spot or point light made from a directional light on the light's orbit
+            // (setLightType).
             session.settings().light = session.scene().fileLightAngles();
             for (const engine::LightType lightType : kSoakLightTypes) {
                 session.scene().setLightType(lightType);
@@ -109,7 +106,7 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
                     for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
                         ++glErrors;
                         out << "soak: GL error 0x" << std::hex << error << std::dec << " at frame " << frames
-                            << " (" << scene << ", " << lightTypeName(lightType) << ", "
+                            << " (" << scene << ", " << engine::toString(lightType) << ", "
                             << shadows::toString(techniques[t]) << " | "
                             << shadows::toString(session.settings().b.technique) << ")" << std::endl;
                     }

@@ -6,7 +6,6 @@
 #include <engine/Components.h>
 #include <engine/gl/GlObject.h>
 
-#include <array>
 #include <cstddef>
 #include <iosfwd>
 #include <string>
@@ -14,8 +13,8 @@
 
 namespace sandbox {
 
-/// @brief Light types the soak run gives each scene's first light. Add new engine::LightType values here.
-inline constexpr std::array kSoakLightTypes{engine::LightType::Directional, engine::LightType::Spot};
+/// @brief Light types the soak run gives each scene's first light: every engine::LightType.
+inline constexpr const auto& kSoakLightTypes = engine::kLightTypes;
 
 /// @brief Cycles of warm-up before the soak's baseline sample: the first compiles programs and fills caches,
 /// the second shows the steady state the rest must keep.

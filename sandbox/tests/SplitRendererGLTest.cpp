@@ -175,6 +175,13 @@ TEST_F(SplitRendererGLTest, LightTypesConvertBothWaysAndRestoreTheFile) {
     // A spot lights the knob differently (falloff, perspective shadow) but still lights the view.
     EXPECT_GT(sandbox::test::compare(spot, directional, 2).fractionAbove, 0.01);
     EXPECT_GT(sandbox::test::distinctCentreColours(spot), 100u);
+    session.scene().setLightType(engine::LightType::Point);
+    EXPECT_EQ(session.scene().lightType(), engine::LightType::Point);
+    const engine::Image point = render(session);
+    // A point light lights every way (no cone): the view is lit, and not as the sun or the spot light it.
+    EXPECT_GT(sandbox::test::compare(point, directional, 2).fractionAbove, 0.01);
+    EXPECT_GT(sandbox::test::compare(point, spot, 2).fractionAbove, 0.01);
+    EXPECT_GT(sandbox::test::distinctCentreColours(point), 100u);
     session.scene().setLightType(engine::LightType::Directional);
     EXPECT_EQ(sandbox::test::compare(render(session), directional, 0).maxAbsDiff, 0);
 }

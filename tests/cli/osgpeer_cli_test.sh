@@ -107,6 +107,9 @@ expect unknownTechnique 2 "--technique: unknown technique 'pcss'" -- \
     "$peer" --scene "$scene" --technique pcss --out "$out/x"
 expect noDirectionalLight 1 "no-sun\.gltf: the scene has no directional light" -- \
     "$peer" --scene "$out/no-sun.gltf" --out "$out/x"
+# The room content scene is lit by point lights only: the peer (which needs a sun) refuses it by name.
+expect pointLightsOnly 1 "room\.gltf: the scene has no directional light" -- \
+    "$peer" --scene "$content/scenes/room.gltf" --out "$out/x"
 expect noCamera 1 "no-camera\.gltf: the scene has no camera" -- \
     "$peer" --scene "$out/no-camera.gltf" --out "$out/x"
 expect badMapSize 2 "--map-size: '0' is not an integer in \[16, 16384\]" -- \

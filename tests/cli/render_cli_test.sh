@@ -27,6 +27,9 @@ expect zeroSize 2 "--size: '0' is not an integer in \[1, 16384\]" -- "$render" -
 expect unknownScene 1 "scenes/nope.gltf: file not found" -- "$render" --scene nope
 printf '%s' '{"asset":{"version":"2.0"},"meshes":[{"primitives":{"attributes":{"POSITION":0}}}]}' >"$out/wrong-type.gltf"
 expect wrongTypeGltf 1 "wrong-type.gltf: meshes\[0\].primitives: expected an array" -- "$render" --scene "$out/wrong-type.gltf" --out "$out/w"
+printf '%s' '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"extensions":{"KHR_lights_punctual":{"light":0}}}],"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","name":"bulb","range":0}]}}}' >"$out/zero-range.gltf"
+expect zeroLightRange 1 "zero-range.gltf: light 0 \('bulb'\): extensions.KHR_lights_punctual.lights\[0\].range must be a finite number > 0" -- \
+    "$render" --scene "$out/zero-range.gltf" --out "$out/z"
 expect missingValue 2 "--out needs a value" -- "$render" --out
 expect missingModule 1 "module 'nothere' not found" -- "$render" --out "$out/m" --module nothere
 expect noEglDriver 1 "headless context: .*libegl-mesa0" -- env LIBGL_DRIVERS_PATH=/nonexistent "$render" --out "$out/n"

@@ -4,11 +4,13 @@
 #include <content/GltfLoader.h>
 
 #include <engine/Engine.h>
+#include <engine/LightAim.h>
 #include <engine/RenderTarget.h>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 namespace {
@@ -22,7 +24,7 @@ struct SceneCase {
 
 const SceneCase kScenesExpected[] = {{"knob", 1},       {"torus", 1},       {"bowl", 1},
                                      {"thin-shell", 2}, {"crease-cube", 1}, {"grazing-plane", 2},
-                                     {"spheres", 16}};
+                                     {"spheres", 16},   {"room", 1},        {"outdoor", 0}};
 
 class ContentScenesGLTest : public testing::TestWithParam<SceneCase> {};
 
@@ -87,6 +89,89 @@ TEST_P(ContentScenesGLTest, RendersTheSceneNotJustTheBackground) {
         }
     }
     EXPECT_GT(covered, static_cast<std::size_t>(image.size.x * image.size.y) / 4);
+}
+
+namespace {
+
+content::LoadedScene loadScene(const char* name) {
+    return content::GltfLoader::load(kScenes / (std::string(name) + ".gltf"));
+}
+
+std::size_t triangles(const engine::Scene& scene) {
+    std::size_t count = 0;
+    scene.forEach([&](engine::EntityId, const engine::Entity& e) {
+        count += e.mesh && e.mesh->mesh ? e.mesh->mesh->triangleCount() : 0;
+    });
+    return count;
+}
+
+} // namespace
+
+TEST(ContentScenesTest, RoomIsAClosedRoomLitByTwoPointLightsWithARange) {
+    const content::LoadedScene loaded = loadScene("room");
+    const engine::Scene& scene = loaded.scene;
+    std::size_t pointLights = 0;
+    std::size_t otherLights = 0;
+    scene.forEach([&](engine::EntityId id, const engine::Entity& e) {
+        if (!e.light) {
+            return;
+        }
+        if (e.light->type != engine::LightType::Point) {
+            ++otherLights;
+            return;
+        }
+        ++pointLights;
+        EXPECT_GT(e.light->range, 5.0f) << e.name;
+        EXPECT_TRUE(std::isfinite(e.light->range)) << e.name;
+        EXPECT_GT(e.light->intensity, 0.0f) << e.name;
+        // Under the ceiling, inside the room.
+        const glm::vec3 at(scene.worldMatrix(id)[3]);
+        EXPECT_GT(at.y, 2.0f) << e.name;
+        EXPECT_LT(at.y, 3.0f) << e.name;
+    });
+    EXPECT_EQ(pointLights, 2u);
+    EXPECT_EQ(otherLights, 0u);
+    // About 8 x 3 x 6 m, closed: the camera stands inside the walls' box.
+    const engine::Aabb bounds = engine::meshBounds(scene);
+    EXPECT_NEAR(bounds.max.x - bounds.min.x, 8.0f, 0.01f);
+    EXPECT_NEAR(bounds.max.y - bounds.min.y, 3.0f, 0.01f);
+    EXPECT_NEAR(bounds.max.z - bounds.min.z, 6.0f, 0.01f);
+    const glm::vec3 eye(scene.worldMatrix(*scene.firstCamera())[3]);
+    EXPECT_TRUE(glm::all(glm::greaterThan(eye, bounds.min)) && glm::all(glm::lessThan(eye, bounds.max)));
+    EXPECT_LT(triangles(scene), 30000u);
+}
+
+TEST(ContentScenesTest, OutdoorSpansKilometresAndTheCameraSeesAllOfIt) {
+    const content::LoadedScene loaded = loadScene("outdoor");
+    const engine::Scene& scene = loaded.scene;
+    const engine::Aabb bounds = engine::meshBounds(scene);
+    EXPECT_GT(bounds.max.x - bounds.min.x, 3000.0f);
+    EXPECT_GT(bounds.max.z - bounds.min.z, 3000.0f);
+    const engine::EntityId camera = *scene.firstCamera();
+    const engine::CameraComponent& lens = *scene.entity(camera).camera;
+    const glm::vec3 eye(scene.worldMatrix(camera)[3]);
+    // The far plane reaches every corner of the scene's box; the near plane suits things at arm's length.
+    for (const glm::vec3& corner : bounds.corners()) {
+        EXPECT_LT(glm::length(corner - eye), lens.farPlane);
+    }
+    EXPECT_LE(lens.nearPlane, 0.5f);
+    std::size_t suns = 0;
+    scene.forEach([&](engine::EntityId id, const engine::Entity& e) {
+        if (e.light) {
+            ASSERT_EQ(e.light->type, engine::LightType::Directional) << e.name;
+            ++suns;
+            const glm::vec3 toSun = glm::normalize(glm::vec3(scene.worldMatrix(id)[2]));
+            const float elevation = glm::degrees(std::asin(toSun.y));
+            EXPECT_GE(elevation, 25.0f);
+            EXPECT_LE(elevation, 35.0f);
+        }
+    });
+    EXPECT_EQ(suns, 1u);
+    // Many meshes (ground tiles and objects), so passes can cull; small enough for llvmpipe.
+    std::size_t meshes = 0;
+    scene.forEach([&](engine::EntityId, const engine::Entity& e) { meshes += e.mesh.has_value(); });
+    EXPECT_GT(meshes, 500u);
+    EXPECT_LT(triangles(scene), 150000u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ContentScenesGLTest, testing::ValuesIn(kScenesExpected),

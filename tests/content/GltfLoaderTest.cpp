@@ -278,17 +278,54 @@ TEST_F(GltfTest, TruncatedGlbIsRejected) {
     EXPECT_NE(loadError(path).find("not a valid glTF 2.0 file"), std::string::npos) << loadError(path);
 }
 
-TEST_F(GltfTest, PointLightsAreLeftOutWithAWarning) {
+TEST_F(GltfTest, UnknownLightTypesAreLeftOutWithAWarning) {
     TriangleGltf gltf;
     gltf.extraNodeFields = R"(,"extensions":{"KHR_lights_punctual":{"light":0}})";
     gltf.extraTopLevel =
         R"(,"extensionsUsed":["KHR_lights_punctual"],)"
-        R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","name":"bulb"}]}})";
-    const LoadedScene loaded = GltfLoader::load(write("point.gltf", gltf.json()));
+        R"("extensions":{"KHR_lights_punctual":{"lights":[{"type":"area","name":"panel"}]}})";
+    const LoadedScene loaded = GltfLoader::load(write("area.gltf", gltf.json()));
     EXPECT_FALSE(loaded.scene.entity(0).light);
     ASSERT_EQ(loaded.warnings.size(), 1u);
-    EXPECT_NE(loaded.warnings[0].find("'bulb') is a point light"), std::string::npos) << loaded.warnings[0];
+    EXPECT_NE(loaded.warnings[0].find("light 0 ('panel') has the unknown type 'area'"), std::string::npos)
+        << loaded.warnings[0];
 }
+
+/// A KHR_lights_punctual light as written in a file, and what the loader makes of it.
+struct LightCase {
+    const char* name;
+    const char* light; // the light's JSON object
+    engine::LightType type;
+    float range;
+};
+
+class GltfLightTest : public GltfTest, public testing::WithParamInterface<LightCase> {};
+
+TEST_P(GltfLightTest, LoadsTypeAndRange) {
+    TriangleGltf gltf;
+    gltf.extraNodeFields = R"(,"translation":[1,2,3],"extensions":{"KHR_lights_punctual":{"light":0}})";
+    gltf.extraTopLevel = std::string(R"(,"extensionsUsed":["KHR_lights_punctual"],)") +
+                         R"("extensions":{"KHR_lights_punctual":{"lights":[)" + GetParam().light + "]}}";
+    const LoadedScene loaded = GltfLoader::load(write("light.gltf", gltf.json()));
+    EXPECT_TRUE(loaded.warnings.empty());
+    const engine::Entity& entity = loaded.scene.entity(0);
+    ASSERT_TRUE(entity.light);
+    EXPECT_EQ(entity.light->type, GetParam().type);
+    EXPECT_FLOAT_EQ(entity.light->range, GetParam().range);
+    EXPECT_EQ(entity.transform.translation, glm::vec3(1, 2, 3));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Lights, GltfLightTest,
+    testing::Values(
+        LightCase{"point", R"({"type":"point","intensity":5,"range":10})", engine::LightType::Point, 10.0f},
+        // Without range a point light reaches everywhere (range 0 = unlimited).
+        LightCase{"pointUnlimited", R"({"type":"point"})", engine::LightType::Point, 0.0f},
+        LightCase{"spot", R"({"type":"spot","range":0.5,"spot":{}})", engine::LightType::Spot, 0.5f},
+        // A sun has no distance: KHR_lights_punctual gives range to point and spot lights only.
+        LightCase{"directionalIgnoresRange", R"({"type":"directional","range":-3})",
+                  engine::LightType::Directional, 0.0f}),
+    [](const auto& test) { return std::string(test.param.name); });
 
 class GltfRoundTripTest : public GltfTest, public testing::WithParamInterface<const char*> {};
 
@@ -310,6 +347,17 @@ TEST_P(GltfRoundTripTest, PreservesGeometryHierarchyCamerasAndLights) {
     const auto spot = scene.create("spot");
     scene.entity(spot).light =
         engine::LightComponent{engine::LightType::Spot, {1, 0.5f, 0.25f}, 7.0f, true, 20.0f, 0.2f, 0.4f};
+    const auto bulb = scene.create("bulb");
+    engine::LightComponent point;
+    point.type = engine::LightType::Point;
+    point.color = {0.9f, 0.8f, 0.7f};
+    point.intensity = 12.0f;
+    point.range = 9.5f;
+    scene.entity(bulb).light = point;
+    scene.entity(bulb).transform.translation = {-1, 2.5f, 0.5f};
+    const auto unlimited = scene.create("unlimited bulb");
+    point.range = 0.0f;
+    scene.entity(unlimited).light = point;
     const auto camera = scene.create("camera");
     scene.entity(camera).camera = engine::CameraComponent{};
     scene.entity(camera).camera->verticalFov = 0.9f;
@@ -344,6 +392,15 @@ TEST_P(GltfRoundTripTest, PreservesGeometryHierarchyCamerasAndLights) {
     EXPECT_FLOAT_EQ(spotLight.range, 20.0f);
     EXPECT_FLOAT_EQ(spotLight.outerConeAngle, 0.4f);
     EXPECT_EQ(spotLight.color, glm::vec3(1, 0.5f, 0.25f));
+    const auto& bulbLight = *loaded.scene.entity(bulb).light;
+    EXPECT_EQ(bulbLight.type, engine::LightType::Point);
+    EXPECT_FLOAT_EQ(bulbLight.intensity, 12.0f);
+    EXPECT_FLOAT_EQ(bulbLight.range, 9.5f);
+    EXPECT_EQ(bulbLight.color, glm::vec3(0.9f, 0.8f, 0.7f));
+    EXPECT_EQ(loaded.scene.entity(bulb).transform.translation, glm::vec3(-1, 2.5f, 0.5f));
+    ASSERT_TRUE(loaded.scene.entity(unlimited).light);
+    EXPECT_EQ(loaded.scene.entity(unlimited).light->type, engine::LightType::Point);
+    EXPECT_FLOAT_EQ(loaded.scene.entity(unlimited).light->range, 0.0f);
     EXPECT_FLOAT_EQ(loaded.scene.entity(camera).camera->verticalFov, 0.9f);
 }
 
@@ -849,5 +906,28 @@ INSTANTIATE_TEST_SUITE_P(
         BadValueCase{
             "negativeLightColor", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
             R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional","color":[1,-1,1]}]}})",
-            "light 0 needs a color of finite, non-negative numbers"}),
+            "light 0 needs a color of finite, non-negative numbers"},
+        // KHR_lights_punctual: range, when present, must be > 0; an absent range is the unlimited one.
+        BadValueCase{
+            "pointRangeZero", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+            R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","name":"bulb",)"
+            R"("range":0}]}})",
+            "light 0 ('bulb'): extensions.KHR_lights_punctual.lights[0].range must be a finite number > 0 "
+            "(leave it out for an unlimited range), not 0"},
+        BadValueCase{
+            "pointRangeNegative", R"(,"extensions":{"KHR_lights_punctual":{"light":1}})",
+            R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point"},)"
+            R"({"type":"point","name":"lamp","range":-2.5}]}})",
+            "light 1 ('lamp'): extensions.KHR_lights_punctual.lights[1].range must be a finite number > 0 "
+            "(leave it out for an unlimited range), not -2.5"},
+        // 1e300 is a finite double but an infinite float, which the engine stores.
+        BadValueCase{"pointRangeInfiniteAsFloat", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","range":1e300}]}})",
+                     "light 0: extensions.KHR_lights_punctual.lights[0].range must be a finite number > 0 "
+                     "(leave it out for an unlimited range), not 1e+300"},
+        BadValueCase{
+            "spotRangeZero", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+            R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot","name":"cone",)"
+            R"("spot":{},"range":0}]}})",
+            "light 0 ('cone'): extensions.KHR_lights_punctual.lights[0].range must be a finite number > 0"}),
     [](const auto& test) { return std::string(test.param.name); });

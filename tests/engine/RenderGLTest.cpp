@@ -79,6 +79,105 @@ TEST(RenderGLTest, SpotLightFallsOffWithInverseSquareAndCone) {
     expectPixel(image, {kSize.x / 2 + 14, kSize.y / 2 + 14}, glm::vec3(0.0f));
 }
 
+namespace {
+
+/// Renders `scene` without ambient light into a linear float target (no sRGB encoding): the shaded colour,
+/// or the world position of each pixel's surface with OutputMode::WorldPosition.
+std::vector<float> renderLinear(const Scene& scene, EntityId camera, OutputMode output) {
+    Engine engine;
+    engine.renderer().environment.ambient = glm::vec3(0.0f);
+    engine.renderer().output = output;
+    RenderTarget target(kSize, ColorFormat::Rgba32F);
+    engine.renderFrame(scene, camera, target);
+    return target.readPixelsFloat();
+}
+
+glm::vec3 texel(const std::vector<float>& pixels, glm::ivec2 at) {
+    const std::size_t i = 4 * static_cast<std::size_t>(at.y * kSize.x + at.x);
+    return {pixels[i], pixels[i + 1], pixels[i + 2]};
+}
+
+/// What a light of `intensity` at `light` gives a surface point `p` of the cube's +Z face (normal +Z) with
+/// base colour kBase: Lambert times the inverse square, windowed by KHR_lights_punctual's range
+/// (clamp(1 - (d/range)^4, 0, 1), "Range Property"; range 0 = unlimited).
+glm::vec3 expectedPositional(glm::vec3 p, glm::vec3 light, float intensity, float range) {
+    const glm::vec3 offset = light - p;
+    const float d = glm::length(offset);
+    const float window = range > 0.0f ? glm::clamp(1.0f - std::pow(d / range, 4.0f), 0.0f, 1.0f) : 1.0f;
+    return kBase * intensity * std::max(offset.z / d, 0.0f) * window / (d * d);
+}
+
+// Pixels of the face's centre row: on the axis under the light, 0.53 and 0.78 units off it.
+constexpr glm::ivec2 kOnAxis{32, 32};
+constexpr glm::ivec2 kNear{40, 32};
+constexpr glm::ivec2 kFar{44, 32};
+constexpr glm::vec3 kLightAboveFace{0.0f, 0.0f, 1.5f}; // 0.5 in front of the +Z face
+
+} // namespace
+
+TEST(RenderGLTest, PointLightFallsOffWithTheInverseSquareInEveryDirection) {
+    glTestContext();
+    LitCubeScene fixture(kBase);
+    const EntityId bulb = fixture.scene.create("bulb");
+    LightComponent light;
+    light.type = LightType::Point;
+    light.intensity = 0.25f; // at distance 0.5 from the face: 0.25 / 0.5² = 1
+    fixture.scene.entity(bulb).light = light;
+    // Facing away from the face: a point light has no cone, so the orientation must not matter (a spot so
+    // placed would leave the face dark).
+    fixture.scene.entity(bulb).transform = Transform::lookAt(kLightAboveFace, {0, 0, 5});
+    const std::vector<float> positions =
+        renderLinear(fixture.scene, fixture.camera, OutputMode::WorldPosition);
+    const std::vector<float> shaded = renderLinear(fixture.scene, fixture.camera, OutputMode::Shaded);
+
+    for (const glm::ivec2 at : {kOnAxis, kNear, kFar}) {
+        const glm::vec3 p = texel(positions, at);
+        ASSERT_NEAR(p.z, 1.0f, 1e-4f) << "pixel " << at.x << " is not on the +Z face";
+        const glm::vec3 expected = expectedPositional(p, kLightAboveFace, light.intensity, 0.0f);
+        EXPECT_NEAR(texel(shaded, at).r, expected.r, 0.01f * expected.r) << "pixel " << at.x;
+    }
+    // The far pixel is ~1.9x as far from the light and lit at cos ~0.54: 1/(1.9² / 0.54) ~ 1/6.4 of the
+    // centre, as the inverse square and Lambert predict together.
+    const glm::vec3 centre = texel(positions, kOnAxis);
+    const glm::vec3 far = texel(positions, kFar);
+    const float expectedRatio = expectedPositional(centre, kLightAboveFace, 1.0f, 0.0f).r /
+                                expectedPositional(far, kLightAboveFace, 1.0f, 0.0f).r;
+    EXPECT_GT(expectedRatio, 5.0f);
+    EXPECT_NEAR(texel(shaded, kOnAxis).r / texel(shaded, kFar).r, expectedRatio, 0.01f * expectedRatio);
+}
+
+class PositionalRangeGLTest : public testing::TestWithParam<LightType> {};
+
+TEST_P(PositionalRangeGLTest, RangeWindowsTheFalloffToZeroAtTheRange) {
+    glTestContext();
+    LitCubeScene fixture(kBase);
+    const EntityId lamp = fixture.scene.create("lamp");
+    LightComponent light;
+    light.type = GetParam();
+    light.intensity = 0.25f;
+    light.range = 0.8f; // between the near (0.73 away) and the far pixel (0.93 away)
+    // A spot's cone wide enough to cover every sampled pixel fully: only the range window differs.
+    light.innerConeAngle = 1.2f;
+    light.outerConeAngle = 1.3f;
+    fixture.scene.entity(lamp).light = light;
+    fixture.scene.entity(lamp).transform = Transform::lookAt(kLightAboveFace, {0, 0, 0});
+    const std::vector<float> positions =
+        renderLinear(fixture.scene, fixture.camera, OutputMode::WorldPosition);
+    const std::vector<float> shaded = renderLinear(fixture.scene, fixture.camera, OutputMode::Shaded);
+
+    const glm::vec3 onAxis = expectedPositional(texel(positions, kOnAxis), kLightAboveFace, 0.25f, 0.8f);
+    const glm::vec3 near = expectedPositional(texel(positions, kNear), kLightAboveFace, 0.25f, 0.8f);
+    // Inside the range the window is clamp(1 - (d/range)^4, 0, 1): 0.85 on the axis, 0.3 at the near pixel.
+    EXPECT_NEAR(texel(shaded, kOnAxis).r, onAxis.r, 0.01f * onAxis.r);
+    EXPECT_NEAR(texel(shaded, kNear).r, near.r, 0.01f * near.r);
+    EXPECT_LT(near.r, 0.4f * expectedPositional(texel(positions, kNear), kLightAboveFace, 0.25f, 0.0f).r);
+    // Beyond the range: no light at all.
+    EXPECT_EQ(texel(shaded, kFar), glm::vec3(0.0f));
+}
+
+INSTANTIATE_TEST_SUITE_P(Types, PositionalRangeGLTest, testing::Values(LightType::Point, LightType::Spot),
+                         [](const auto& test) { return test.param == LightType::Point ? "point" : "spot"; });
+
 TEST(RenderGLTest, MeshWithoutNormalsUsesFlatVariantAndSameShading) {
     glTestContext();
     LitCubeScene fixture(kBase);

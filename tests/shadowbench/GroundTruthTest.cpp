@@ -100,6 +100,47 @@ TEST(GroundTruthTest, SphereOverPlaneMatchesTheClosedFormShadow) {
     EXPECT_GT(compared, 9000u);
 }
 
+TEST(GroundTruthTest, PointLightAboveASphereCastsTheClosedFormMagnifiedShadow) {
+    engine::Scene scene;
+    testsupport::addGround(scene, 20.0f);
+    const auto ball = scene.create("ball");
+    scene.entity(ball).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::sphere(1.0f, 96, 192))};
+    const glm::vec3 centre(0.5f, 2.0f, -0.5f);
+    scene.entity(ball).transform.translation = centre;
+    const RayTracedVisibility tracer(scene);
+    engine::FrameLight bulb;
+    bulb.light.type = engine::LightType::Point;
+    bulb.position = centre + glm::vec3(0.0f, 3.0f, 0.0f); // 5 above the ground, straight over the ball
+    bulb.direction = {1, 0, 0};                           // a point light's axis must not matter
+    const GroundSamples s = groundGrid(4.0f, 100);
+    std::vector<float> visibility(s.positions.size());
+    tracer.hardVisibility(s.positions, s.normals, s.covered, bulb, visibility);
+    std::size_t compared = 0;
+    std::size_t shadowed = 0;
+    for (std::size_t i = 0; i < s.positions.size(); ++i) {
+        // Shadowed when the segment from the ground point to the light passes within the radius of the
+        // sphere's centre.
+        const glm::vec3 p = s.positions[i];
+        const glm::vec3 segment = bulb.position - p;
+        const float t = glm::clamp(glm::dot(centre - p, segment) / glm::dot(segment, segment), 0.0f, 1.0f);
+        const float distance = glm::length(p + t * segment - centre);
+        if (std::abs(distance - 1.0f) < 2e-3f) {
+            continue; // the tessellated sphere's silhouette
+        }
+        EXPECT_EQ(visibility[i], distance < 1.0f ? 0.0f : 1.0f) << "at " << p.x << ", " << p.z;
+        shadowed += visibility[i] == 0.0f;
+        ++compared;
+    }
+    EXPECT_GT(compared, 9000u);
+    // The shadow is the disk the light's tangent cone cuts from the ground: radius H tan(asin(r / (H - h)))
+    // = 5 tan(asin(1/3)) = 1.77 for light height H = 5, centre height h = 2, radius r = 1; a sun overhead
+    // would give radius 1. Each sample stands for (8/100)² of ground.
+    const float shadowRadius = 5.0f * std::tan(std::asin(1.0f / 3.0f));
+    const float expectedSamples = glm::pi<float>() * shadowRadius * shadowRadius / (0.08f * 0.08f);
+    EXPECT_NEAR(static_cast<float>(shadowed), expectedSamples, 0.03f * expectedSamples);
+}
+
 TEST(GroundTruthTest, SpotLightBlockedOnlyBetweenLightAndSurface) {
     engine::Scene scene;
     const auto box = scene.create("box");

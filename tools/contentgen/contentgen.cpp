@@ -5,14 +5,12 @@
 // Every cage is closed, all-quad and counter-clockwise seen from outside. Each file is read back after
 // writing, so the tool never emits content the engine would reject.
 
+#include "LargeScenes.h"
+#include "SceneBuilder.h"
+
 #include "content/CageLoader.h"
 #include "content/CageShapes.h"
 #include "content/CageWriter.h"
-#include "content/ContentError.h"
-#include "content/GltfLoader.h"
-#include "content/SubdivisionSurface.h"
-
-#include <engine/Primitives.h>
 
 #include <glm/gtc/constants.hpp>
 
@@ -27,6 +25,7 @@ namespace {
 
 using content::Cage;
 using content::CageShapes;
+using contentgen::SceneBuilder;
 
 // Door knob, bottom to top: a flat base disc, a concave neck and a bulbous handle.
 Cage knob() {
@@ -110,93 +109,6 @@ void writeCages(const std::filesystem::path& folder) {
     }
 }
 
-/// Builds one scene: meshes, subdivision surfaces referring to the cages, a camera and lights.
-class SceneBuilder {
-public:
-    explicit SceneBuilder(std::filesystem::path cagesFolder) : cages_(std::move(cagesFolder)) {}
-
-    engine::EntityId ground(float size, glm::vec3 color = {0.75f, 0.75f, 0.72f}) {
-        auto plane = std::make_shared<engine::MeshData>(engine::primitives::plane(size, 1));
-        plane->name = "ground";
-        plane->material.baseColor = color;
-        const engine::EntityId id = scene_.create("ground");
-        scene_.entity(id).mesh = engine::MeshComponent{plane};
-        return id;
-    }
-
-    /// A subdivision surface of cage `cageName` at `level`; the stored mesh is a level-1 preview for other
-    /// viewers.
-    engine::EntityId surface(const std::string& name, const std::string& cageName, int level, glm::vec3 color,
-                             glm::vec3 translation, float scale = 1.0f) {
-        const Cage cage = content::CageLoader::load(cages_ / (cageName + ".obj"));
-        auto preview = std::make_shared<engine::MeshData>(content::SubdivisionSurface(cage).evaluate(1).mesh);
-        preview->name = cageName;
-        preview->material.baseColor = color;
-        const engine::EntityId id = scene_.create(name);
-        scene_.entity(id).mesh = engine::MeshComponent{preview};
-        scene_.entity(id).transform.translation = translation;
-        scene_.entity(id).transform.scale = glm::vec3(scale);
-        tags_.emplace_back(id,
-                           content::SubdivisionTag{"catmull-clark", level, "../cages/" + cageName + ".obj"});
-        return id;
-    }
-
-    /// A directional light from `azimuthDegrees` (around +Y, 0 = from +Z) and `elevationDegrees` above the
-    /// horizon.
-    engine::EntityId sun(float azimuthDegrees, float elevationDegrees, float intensity = 1.1f) {
-        const float azimuth = glm::radians(azimuthDegrees);
-        const float elevation = glm::radians(elevationDegrees);
-        const glm::vec3 from(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                             std::cos(elevation) * std::cos(azimuth));
-        const engine::EntityId id = scene_.create("sun");
-        scene_.entity(id).light = engine::LightComponent{};
-        scene_.entity(id).light->intensity = intensity;
-        scene_.entity(id).transform = engine::Transform::lookAt(from * 10.0f, {0, 0, 0});
-        return id;
-    }
-
-    engine::EntityId spot(glm::vec3 position, glm::vec3 target, float intensity, float outerConeAngle) {
-        const engine::EntityId id = scene_.create("spot");
-        engine::LightComponent light;
-        light.type = engine::LightType::Spot;
-        light.intensity = intensity;
-        light.outerConeAngle = outerConeAngle;
-        light.innerConeAngle = outerConeAngle * 0.8f;
-        scene_.entity(id).light = light;
-        scene_.entity(id).transform = engine::Transform::lookAt(position, target);
-        return id;
-    }
-
-    engine::EntityId camera(glm::vec3 eye, glm::vec3 target, float verticalFov = 0.75f) {
-        const engine::EntityId id = scene_.create("camera");
-        engine::CameraComponent lens;
-        lens.verticalFov = verticalFov;
-        lens.nearPlane = 0.1f;
-        lens.farPlane = 60.0f;
-        scene_.entity(id).camera = lens;
-        scene_.entity(id).transform = engine::Transform::lookAt(eye, target);
-        return id;
-    }
-
-    engine::Scene& scene() { return scene_; }
-
-    void save(const std::filesystem::path& path) const {
-        content::GltfWriter::save(scene_, path, tags_);
-        const content::LoadedScene check = content::GltfLoader::load(path);
-        std::size_t triangles = 0;
-        check.scene.forEach([&](engine::EntityId, const engine::Entity& entity) {
-            triangles += entity.mesh ? entity.mesh->mesh->triangleCount() : 0;
-        });
-        std::cout << path.string() << ": " << check.scene.size() << " entities, " << triangles
-                  << " triangles as loaded\n";
-    }
-
-private:
-    std::filesystem::path cages_;
-    engine::Scene scene_;
-    std::vector<std::pair<engine::EntityId, content::SubdivisionTag>> tags_;
-};
-
 struct SceneRecipe {
     std::string name;
     std::function<void(SceneBuilder&)> build;
@@ -270,6 +182,11 @@ const std::vector<SceneRecipe>& sceneRecipes() {
              b.spot({3.0f, 7.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 0.75f);
              b.camera({0.0f, 6.0f, 8.0f}, {0.0f, 0.0f, 0.0f});
          }},
+        // A furnished room lit by two overlapping point lights: omnidirectional lights inside a closed box.
+        {"room", contentgen::buildRoom},
+        // Kilometres of rolling ground with objects from posts to towers, seen from eye height: a view from
+        // 0.3 m to the horizon under one low sun.
+        {"outdoor", contentgen::buildOutdoor},
     };
     return recipes;
 }

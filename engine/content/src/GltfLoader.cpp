@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <span>
+#include <sstream>
 #include <type_traits>
 #include <vector>
 
@@ -244,6 +245,7 @@ private:
         const nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
         if (!document.is_discarded()) {
             checkGltfMemberTypes(document, source_);
+            noteLightRanges(document);
         }
         const auto size = static_cast<unsigned int>(bytes.size());
         ConfinedFiles files(baseFolder_);
@@ -286,6 +288,27 @@ private:
         }
         if (!warnings.empty()) {
             result_.warnings.push_back(trim(warnings));
+        }
+    }
+
+    /// Notes which lights state a range. tinygltf reads an absent range as 0, which the engine takes for
+    /// "unlimited", so a range written as 0 (invalid: KHR_lights_punctual requires range > 0) could not be
+    /// told from none without the document. Member types are already checked.
+    void noteLightRanges(const nlohmann::json& document) {
+        const auto extensions = document.find("extensions");
+        if (extensions == document.end()) {
+            return;
+        }
+        const auto punctual = extensions->find("KHR_lights_punctual");
+        if (punctual == extensions->end()) {
+            return;
+        }
+        const auto lights = punctual->find("lights");
+        if (lights == punctual->end()) {
+            return;
+        }
+        for (const nlohmann::json& light : *lights) {
+            lightStatesRange_.push_back(light.contains("range"));
         }
     }
 
@@ -433,6 +456,8 @@ private:
         }
         const int index = extension.Get("light").GetNumberAsInt();
         const tinygltf::Light& source = at(model_.lights, index, field + " light");
+        const std::string label =
+            "light " + std::to_string(index) + (source.name.empty() ? "" : " ('" + source.name + "')");
         engine::LightComponent light;
         if (source.type == "directional") {
             light.type = engine::LightType::Directional;
@@ -442,32 +467,44 @@ private:
             light.outerConeAngle = static_cast<float>(source.spot.outerConeAngle);
             if (!(light.innerConeAngle >= 0.0f && light.innerConeAngle <= light.outerConeAngle &&
                   light.outerConeAngle <= 1.5708f)) {
-                fail("light " + std::to_string(index) +
-                     " needs 0 <= innerConeAngle <= outerConeAngle <= pi/2");
+                fail(label + " needs 0 <= innerConeAngle <= outerConeAngle <= pi/2");
             }
+        } else if (source.type == "point") {
+            light.type = engine::LightType::Point;
         } else {
-            result_.warnings.push_back(source_ + ": light " + std::to_string(index) + " ('" + source.name +
-                                       "') is a " + source.type +
-                                       " light; only directional and spot lights are "
-                                       "supported, so it was left out");
+            result_.warnings.push_back(source_ + ": " + label + " has the unknown type '" + source.type +
+                                       "' (KHR_lights_punctual defines directional, spot and point), so it "
+                                       "was left out");
             return;
         }
         if (source.color.size() == 3) {
             light.color = glm::vec3(glm::make_vec3(source.color.data()));
             if (!allFinite(light.color) || glm::any(glm::lessThan(light.color, glm::vec3(0.0f)))) {
-                fail("light " + std::to_string(index) + " needs a color of finite, non-negative numbers");
+                fail(label + " needs a color of finite, non-negative numbers");
             }
         }
         light.intensity = static_cast<float>(source.intensity);
-        light.range = static_cast<float>(source.range);
-        if (!std::isfinite(light.intensity) || light.intensity < 0.0f || !std::isfinite(light.range) ||
-            light.range < 0.0f) {
-            fail("light " + std::to_string(index) + " needs a finite, non-negative intensity and range");
+        if (!std::isfinite(light.intensity) || light.intensity < 0.0f) {
+            fail(label + " needs a finite, non-negative intensity");
+        }
+        // KHR_lights_punctual gives range to point and spot lights only (a sun has no distance), and requires
+        // it to be > 0 when present; absent means unlimited. Checked as a float, which the engine stores.
+        const bool statesRange = static_cast<std::size_t>(index) < lightStatesRange_.size() &&
+                                 lightStatesRange_[static_cast<std::size_t>(index)];
+        if (light.type != engine::LightType::Directional && statesRange) {
+            light.range = static_cast<float>(source.range);
+            if (!std::isfinite(light.range) || !(light.range > 0.0f)) {
+                std::ostringstream value;
+                value << source.range;
+                fail(label + ": extensions.KHR_lights_punctual.lights[" + std::to_string(index) +
+                     "].range must be a finite number > 0 (leave it out for an unlimited range), not " +
+                     value.str());
+            }
         }
         if (source.extras.IsObject() && source.extras.Has("castsShadows")) {
             const tinygltf::Value& castsShadows = source.extras.Get("castsShadows");
             if (!castsShadows.IsBool()) {
-                fail("light " + std::to_string(index) + " extras.castsShadows must be true or false");
+                fail(label + " extras.castsShadows must be true or false");
             }
             light.castsShadows = castsShadows.Get<bool>();
         }
@@ -854,8 +891,9 @@ private:
     SceneLoadOptions options_;
     tinygltf::Model model_;
     LoadedScene result_;
-    std::vector<bool> visited_;   // per node: already placed in the scene
-    std::uint64_t meshBytes_ = 0; // charged against options_.meshByteLimit so far
+    std::vector<bool> visited_;          // per node: already placed in the scene
+    std::vector<bool> lightStatesRange_; // per KHR_lights_punctual light: the document has its range
+    std::uint64_t meshBytes_ = 0;        // charged against options_.meshByteLimit so far
 };
 
 } // namespace

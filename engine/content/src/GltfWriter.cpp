@@ -63,7 +63,7 @@ private:
             node.camera = camera(*entity.camera);
         }
         if (entity.light) {
-            tinygltf::Value::Object extension{{"light", tinygltf::Value(light(*entity.light))}};
+            tinygltf::Value::Object extension{{"light", tinygltf::Value(light(entity.name, *entity.light))}};
             node.extensions["KHR_lights_punctual"] = tinygltf::Value(extension);
         }
         if (const auto tag = tags_.find(id); tag != tags_.end()) {
@@ -176,14 +176,21 @@ private:
         return static_cast<int>(model_.cameras.size() - 1);
     }
 
-    int light(const engine::LightComponent& source) {
+    /// A KHR_lights_punctual light named after its entity, so the loader's messages can name it.
+    int light(const std::string& name, const engine::LightComponent& source) {
         tinygltf::Light light;
-        light.type = source.type == engine::LightType::Directional ? "directional" : "spot";
+        light.name = name;
         light.color = {source.color.r, source.color.g, source.color.b};
         light.intensity = source.intensity;
-        light.range = source.range;
+        light.type = engine::toString(source.type);
+        // Written only for spot lights by tinygltf.
         light.spot.innerConeAngle = source.innerConeAngle;
         light.spot.outerConeAngle = source.outerConeAngle;
+        // Range belongs to spot and point lights; tinygltf leaves out a range of 0 (unlimited), as the spec
+        // asks (range must be > 0 when present).
+        if (source.type != engine::LightType::Directional) {
+            light.range = source.range;
+        }
         if (!source.castsShadows) {
             light.extras = tinygltf::Value(tinygltf::Value::Object{{"castsShadows", tinygltf::Value(false)}});
         }

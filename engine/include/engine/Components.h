@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <memory>
 
 namespace engine {
@@ -13,19 +14,31 @@ struct MeshComponent {
     std::shared_ptr<const MeshData> mesh;
 };
 
+/// @brief The KHR_lights_punctual light types: a sun (parallel light), a cone from a point, every direction
+/// from a point.
 enum class LightType { Directional, Spot, Point };
 
+/// @brief Every LightType, for code that offers or cycles through them all.
+inline constexpr std::array kLightTypes{LightType::Directional, LightType::Spot, LightType::Point};
+
+/// @brief The KHR_lights_punctual name of `type`: "directional", "spot" or "point".
+[[nodiscard]] const char* toString(LightType type);
+
 /// @brief A light; directional and spot lights shine along the entity's local -Z axis; spot and point lights
-/// shine from the entity's position.
+/// shine from the entity's position and fall off with the inverse square of the distance, windowed by
+/// `range` (KHR_lights_punctual, "Range Property").
 struct LightComponent {
     LightType type = LightType::Directional;
     /// Linear RGB colour. Default white.
     glm::vec3 color{1.0f};
-    /// Scale on colour: irradiance for directional lights, intensity for spot lights. Default 1.
+    /// Scale on colour: irradiance for directional lights, intensity (irradiance at distance 1) for spot and
+    /// point lights. Default 1.
     float intensity = 1.0f;
     /// Whether shadow modules should make a shadow map for this light. Default true.
     bool castsShadows = true;
-    /// Spot only: distance in world units beyond which the light has no effect; 0 = unlimited. Default 0.
+    /// Spot and point only: distance in world units beyond which the light has no effect; the inverse square
+    /// is multiplied by clamp(1 - (d / range)^4, 0, 1), so it reaches zero smoothly there. 0 = unlimited
+    /// (plain inverse square). Default 0.
     float range = 0.0f;
     /// Spot only: half-angle in radians where the falloff starts. Default 0.4 rad (~23°).
     float innerConeAngle = 0.4f;

@@ -118,13 +118,13 @@ private:
 
     ProgramCache& programs_;
     ShaderVariantKey flatNormalsFlag_;
-    ShaderVariantKey spotLightsFlag_;
+    ShaderVariantKey positionalLightsFlag_; // GS_HAS_POSITIONAL_LIGHTS: the frame has spot or point lights
     ShaderVariantKey worldPositionFlag_;
     ShaderVariantKey worldNormalFlag_;
     ShaderVariantKey lightCountBits_ = 0; // the frame's light count in the GS_LIGHT_COUNT_BIT flags
     std::array<ShaderVariantKey, 4> lightCountFlags_{};
     gl::Buffer frameBlock_;
-    bool sceneHasSpotLights_ = false;
+    bool sceneHasPositionalLights_ = false;
     // Keyed by the mesh pointer; an entry whose mesh died is released (or replaced when its address is
     // reused).
     std::map<const MeshData*, CachedMesh> meshes_;

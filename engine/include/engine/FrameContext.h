@@ -22,8 +22,10 @@ struct FrameLight {
     int index = 0;
     EntityId entity = kNoEntity;
     LightComponent light;
+    /// World position of the light's entity; where spot and point lights shine from.
     glm::vec3 position{0.0f};
-    /// Unit vector the light shines along (world space).
+    /// Unit vector the light shines along (world space): the entity's -Z axis. Directional and spot lights
+    /// only; a point light shines every way, so for it this is just the entity's orientation.
     glm::vec3 direction{0.0f, 0.0f, -1.0f};
 };
 

@@ -34,7 +34,8 @@ void setWorldTransform(Scene& scene, EntityId id, const Transform& world);
 
 /// @brief Points light `light` from `angles`. A directional light only turns; a spot light swings around the
 /// point its axis passes closest to the meshes' centre, keeping its distance to it, so it keeps lighting what
-/// it lit. Throws Error when `light` has no light component or the angles are not finite.
+/// it lit; a point light swings around the meshes' centre at its distance from it (facing the centre). Throws
+/// Error when `light` has no light component or the angles are not finite.
 void aimLight(Scene& scene, EntityId light, const LightAngles& angles);
 
 } // namespace engine

@@ -21,7 +21,9 @@ RTCScene scene(void* handle) {
     return static_cast<RTCScene>(handle);
 }
 
-/// Direction and length from `position` towards the light (a sun is infinitely far).
+/// Direction and length from `position` towards the light: a sun is infinitely far along its direction; spot
+/// and point lights sit at their position (a spot's cone does not limit its shadow rays: outside it the
+/// surface is dark anyway).
 void towardsLight(const engine::FrameLight& light, const glm::vec3& position, glm::vec3& direction,
                   float& length) {
     if (light.light.type == engine::LightType::Directional) {

@@ -119,6 +119,7 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
     receivers_.resize(positions.size());
     std::vector<float> pixelSizes;
     for (std::size_t i = 0; i < positions.size(); ++i) {
+        // A sun shines along its direction; spot and point lights from their position.
         const glm::vec3 toLight = light_.light.type == engine::LightType::Directional
                                       ? -light_.direction
                                       : glm::normalize(light_.position - positions_[i]);

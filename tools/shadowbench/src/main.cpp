@@ -40,7 +40,8 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --defaults            each technique once, at its defaults (ignores --taps, --radius, --resolutions,
                         --formats); rows are labelled with the technique's name
   --light-sweep AZ:EL   point each scene's shadow-casting light from every azimuth x elevation (degrees,
-                        comma-separated lists, e.g. 30,150:40,15,5,1); rows are "<scene>-az<A>-el<E>"
+                        comma-separated lists, e.g. 30,150:40,15,5,1); rows are "<scene>-az<A>-el<E>";
+                        a spot or point light keeps its distance (engine::aimLight)
   --band TEXELS         boundary band half-width around true shadow edges   [2]
   --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
   --out DIR             where results.csv, results.json and images go       [bench]: per scene

@@ -20,16 +20,17 @@ public:
     RayTracedVisibility(const RayTracedVisibility&) = delete;
     RayTracedVisibility& operator=(const RayTracedVisibility&) = delete;
 
-    /// @brief Hard visibility of a point light source or sun: 1 where the segment from the surface to the
-    /// light is free, 0 where it is blocked. Pixels with `covered[i] == 0` get 0. The ray starts a small
-    /// offset (1e-4 of the scene size) along `normals[i]`, so a surface never shadows itself by rounding.
+    /// @brief Hard visibility of a sun, spot or point light: 1 where the segment from the surface to the
+    /// light (for a sun: the ray towards it) is free, 0 where it is blocked. Pixels with `covered[i] == 0`
+    /// get 0. The ray starts a small offset (1e-4 of the scene size) along `normals[i]`, so a surface never
+    /// shadows itself by rounding.
     void hardVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light,
                         std::span<float> visibility) const;
 
     /// @brief Soft visibility of an area light: the fraction of `samplesPerAxis`² stratified rays that reach
     /// a disk of `radius` facing the surface (directional lights: `radius` is the sun's angular radius in
-    /// radians; spot lights: its physical radius in world units).
+    /// radians; spot and point lights: its physical radius in world units).
     void softVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light, float radius,
                         int samplesPerAxis, std::span<float> visibility) const;

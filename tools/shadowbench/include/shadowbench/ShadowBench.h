@@ -138,8 +138,9 @@ public:
     ShadowBench(engine::TimingMethod method, BenchOptions options);
 
     /// @brief Loads `path` (a glTF), renders its G-buffer and ray-traces the ground truth for its first
-    /// shadow-casting light, pointed from `light` when given (engine::aimLight) instead of the file's
-    /// direction. Throws engine::Error subclasses naming the file on bad input.
+    /// shadow-casting light, pointed from `light` when given (engine::aimLight: a spot or point light is
+    /// placed at its distance along that direction) instead of the file's pose. Throws engine::Error
+    /// subclasses naming the file on bad input.
     [[nodiscard]] std::unique_ptr<BenchScene>
     prepare(const std::string& name, const std::filesystem::path& path,
             const std::optional<engine::LightAngles>& light = {}) const;
