@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# End-to-end checks of gs-osgshadow (the OpenSceneGraph peer): real vdsm and sm renders whose outputs must
-# parse and show both shadow and light, and each bad input's message and exit status.
-# usage: osgpeer_cli_test.sh GS_OSGSHADOW CONTENT_DIR OUT_DIR   (needs an X display: run under xvfb-run)
+# End-to-end checks of gs-osgshadow (the OpenSceneGraph peer): real vdsm, sm, pssm and two-map vdsm renders
+# whose outputs must parse and show both shadow and light, and each bad input's message and exit status.
+# usage: osgpeer_cli_test.sh GS_OSGSHADOW CONTENT_DIR OUT_DIR
+# Needs an X display: without DISPLAY it reruns itself under xvfb-run, or exits 77 (skipped) saying so.
 set -u
+if [[ -z ${DISPLAY:-} ]]; then
+    command -v xvfb-run >/dev/null || { echo "osgpeer: no X display and xvfb-run is missing (apt-get install xvfb); skipped"; exit 77; }
+    exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
+fi
 peer=$1
 content=$2
 out=$3
@@ -13,20 +18,29 @@ python=/usr/bin/python3
 
 
 # Checks PREFIX.json's fields, that PREFIX.visibility.pfm is a WxH single-channel PFM with valid values in
-# [0, 1] (or -1 for no lit surface), and that the frame has both shadowed (< 0.5) and lit (> 0.9) pixels.
-check_outputs() { # check_outputs NAME PREFIX TECHNIQUE
-    local name=$1 prefix=$2 technique=$3
-    if ! "$python" - "$prefix" "$technique" <<'PY'; then
+# [0, 1] (or -1 for no lit surface), and that the frame is fairly shaded, as white diffuse without ambient
+# gives: umbra pixels (<= 0.02) exist and at least half the lit surface reads 1 (the rest is the technique's
+# own acne and penumbra).
+check_outputs() { # check_outputs NAME PREFIX TECHNIQUE [SHADOW_MAPS [MAP_SIZE]]
+    local name=$1 prefix=$2 technique=$3 maps=${4:-1} mapSize=${5:-512}
+    if ! "$python" - "$prefix" "$technique" "$maps" "$mapSize" <<'PY'; then
 import json, struct, sys
-prefix, technique = sys.argv[1], sys.argv[2]
+prefix, technique, maps, map_size = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 report = json.load(open(prefix + ".json"))
-for key in ("technique", "osgClass", "renderer", "timingMethod", "size", "mapSize", "frames", "unshadowedMs",
-            "shadowedMs", "triangles", "drawables"):
+for key in ("technique", "osgClass", "renderer", "timingMethod", "size", "mapSize", "shadowMaps", "camera",
+            "frames", "unshadowedMs", "shadowedMs", "triangles", "drawables", "osgSettings"):
     assert key in report, "JSON lacks " + key
+assert report["shadowMaps"] == maps, "shadowMaps %d, wanted %d" % (report["shadowMaps"], maps)
+assert report["camera"]["projection"] == "perspective" and 0 < report["camera"]["near"] < report["camera"]["far"]
+settings = report["osgSettings"]
+if technique == "pssm":
+    assert settings["splits"] == maps and settings["ambientBias"] == [0.0, 1.0], str(settings)
+if technique == "vdsm":
+    assert settings["numShadowMapsPerLight"] == maps, str(settings)
 for key in ("unshadowedMs", "shadowedMs"):
     times = report[key]
     assert 0 < times["min"] <= times["median"] <= times["max"], key + " not ordered: " + str(times)
-assert report["technique"] == technique and report["size"] == [160, 120] and report["mapSize"] == 512
+assert report["technique"] == technique and report["size"] == [160, 120] and report["mapSize"] == map_size
 assert report["frames"] == 2 and report["triangles"] > 0 and report["drawables"] > 0
 assert report["timingMethod"] == "glFinish + steady clock"
 data = open(prefix + ".visibility.pfm", "rb").read()
@@ -41,6 +55,10 @@ assert all(0.0 <= v <= 1.0 for v in valid), "valid visibility outside [0, 1]"
 shadowed = sum(v < 0.5 for v in valid)
 lit = sum(v > 0.9 for v in valid)
 assert shadowed > 50 and lit > 1000, "shadowed %d, lit %d pixels" % (shadowed, lit)
+umbra = sum(v <= 0.02 for v in valid)
+full = sum(v >= 0.99 for v in valid)
+assert umbra > 20, "only %d umbra pixels (<= 0.02): shadow is not black" % umbra
+assert full > 0.5 * len(valid), "only %d of %d lit pixels read 1" % (full, len(valid))
 assert open(prefix + ".png", "rb").read(8) == b"\x89PNG\r\n\x1a\n", "PNG signature"
 PY
         echo "FAIL $name: outputs"
@@ -57,6 +75,16 @@ for technique in vdsm sm; do
         --out "$out/torus-$technique"
     check_outputs "render-$technique" "$out/torus-$technique" "$technique"
 done
+# PSSM's only depth bias is a constant 2^-9 of each split's depth range, so 512² maps show acne on the
+# ground at this size; 1024² keep it to a few per cent.
+expect render-pssm 0 "pssm \(osgShadow::ParallelSplitShadowMap\) .* x2: .*wrote" -- \
+    "$peer" --scene "$scene" --technique pssm --splits 2 --size 160x120 --map-size 1024 --frames 2 --warmup 1 \
+    --out "$out/torus-pssm2"
+check_outputs render-pssm "$out/torus-pssm2" pssm 2 1024
+expect render-vdsm-csm2 0 "vdsm \(osgShadow::ViewDependentShadowMap\) .* x2: .*wrote" -- \
+    "$peer" --scene "$scene" --technique vdsm --cascades 2 --size 160x120 --map-size 512 --frames 2 --warmup 1 \
+    --out "$out/torus-vdsm-csm2"
+check_outputs render-vdsm-csm2 "$out/torus-vdsm-csm2" vdsm 2
 
 # Hand-written scenes without normals (the peer computes flat ones): a ground quad and a triangle above it lit
 # from 45 degrees, so its shadow falls beside it; and one-triangle scenes without a directional light (only a
@@ -64,7 +92,8 @@ done
 "$python" - "$out" <<'PY'
 import base64, json, struct, sys
 folder = sys.argv[1]
-def scene(nodes, lights, corners=((-1, 0, -1), (1, 0, -1), (0, 0, 1))):
+def scene(nodes, lights, corners=((-1, 0, -1), (1, 0, -1), (0, 0, 1)),
+          lens={"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1, "zfar": 100}}):
     triangle = b"".join(struct.pack("<3f", *corner) for corner in corners)
     return {
         "asset": {"version": "2.0"},
@@ -77,7 +106,7 @@ def scene(nodes, lights, corners=((-1, 0, -1), (1, 0, -1), (0, 0, 1))):
                        "min": [min(c[i] for c in corners) for i in range(3)],
                        "max": [max(c[i] for c in corners) for i in range(3)]}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1, "zfar": 100}}],
+        "cameras": [lens],
         "nodes": [{"mesh": 0}] + nodes,
         "scenes": [{"nodes": list(range(1 + len(nodes)))}],
         "scene": 0,
@@ -93,6 +122,9 @@ json.dump(scene([above, sun], [{"type": "directional"}], ground + occluder),
 spot = {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 3, 0]}
 json.dump(scene([camera, spot], [{"type": "spot", "spot": {}}]), open(folder + "/no-sun.gltf", "w"))
 json.dump(scene([spot], [{"type": "directional"}]), open(folder + "/no-camera.gltf", "w"))
+orthographic = {"type": "orthographic", "orthographic": {"xmag": 3, "ymag": 3, "znear": 0.1, "zfar": 100}}
+json.dump(scene([above, sun], [{"type": "directional"}], ground + occluder, orthographic),
+          open(folder + "/orthographic.gltf", "w"))
 PY
 
 # ShadowMap draws only back faces into its map, so this one-sided occluder casts no shadow with sm: use vdsm.
@@ -105,6 +137,16 @@ ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; fail
 expect missingFile 1 "nope\.gltf: file not found" -- "$peer" --scene "$out/nope.gltf" --out "$out/x"
 expect unknownTechnique 2 "--technique: unknown technique 'pcss'" -- \
     "$peer" --scene "$scene" --technique pcss --out "$out/x"
+expect tooManyCascades 2 "--cascades: OpenSceneGraph 3.6's ViewDependentShadowMap renders at most 2 maps" -- \
+    "$peer" --scene "$scene" --technique vdsm --cascades 3 --out "$out/x"
+expect badSplits 2 "--splits: '5' is not an integer in \[1, 4\]" -- \
+    "$peer" --scene "$scene" --technique pssm --splits 5 --out "$out/x"
+expect splitsWithoutPssm 2 "--splits applies to --technique pssm only" -- \
+    "$peer" --scene "$scene" --technique sm --splits 2 --out "$out/x"
+expect cascadesWithoutVdsm 2 "--cascades applies to --technique vdsm only" -- \
+    "$peer" --scene "$scene" --technique pssm --cascades 2 --out "$out/x"
+expect pssmOrthographic 1 "orthographic\.gltf: --technique pssm needs a perspective camera" -- \
+    "$peer" --scene "$out/orthographic.gltf" --technique pssm --out "$out/x"
 expect noDirectionalLight 1 "no-sun\.gltf: the scene has no directional light" -- \
     "$peer" --scene "$out/no-sun.gltf" --out "$out/x"
 # The room content scene is lit by point lights only: the peer (which needs a sun) refuses it by name.

@@ -152,6 +152,9 @@ OsgScene buildOsgScene(const engine::Scene& scene, const std::string& sourceName
     light->setAmbient(osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));
     light->setDiffuse(osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
     light->setSpecular(osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    // osg::Light's direction is its spot axis, which OpenGL ignores for a light with the default 180-degree
+    // cutoff; ParallelSplitShadowMap reads it (not the position) as the direction the sun shines along.
+    light->setDirection(toOsg(result.lightDirection));
     result.light = new osg::LightSource;
     result.light->setLight(light);
     // Position given in world space: the light source sits at the root, under the view matrix only.

@@ -27,7 +27,8 @@ public:
 struct OsgScene {
     /// One MatrixTransform per mesh entity (world matrix), meshes shared between entities share geometry.
     osg::ref_ptr<osg::Group> meshes;
-    /// The scene's first directional light as OpenGL light 0 (position = direction towards the light, w = 0).
+    /// The scene's first directional light as OpenGL light 0 (position = direction towards the light, w = 0;
+    /// direction = lightDirection).
     osg::ref_ptr<osg::LightSource> light;
     /// Lighting state shared by the unshadowed and shadowed graphs: lighting on, light 0 on, light-model
     /// ambient 0, one-sided lighting, white diffuse material without ambient, specular or emission.

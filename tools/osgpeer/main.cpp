@@ -16,8 +16,10 @@
 #include <osg/GL>
 #include <osg/GraphicsContext>
 #include <osg/Notify>
+#include <osg/State>
 #include <osg/Version>
 #include <osgShadow/LightSpacePerspectiveShadowMap>
+#include <osgShadow/ParallelSplitShadowMap>
 #include <osgShadow/ShadowMap>
 #include <osgShadow/ShadowSettings>
 #include <osgShadow/ShadowedScene>
@@ -25,7 +27,9 @@
 #include <osgShadow/ViewDependentShadowMap>
 #include <osgViewer/Viewer>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -38,10 +42,25 @@ namespace {
 
 constexpr const char* kProgram = "gs-osgshadow";
 
+// OpenSceneGraph 3.6's ViewDependentShadowMap::cull renders at most two maps per light: it notices a larger
+// ShadowSettings::setNumShadowMapsPerLight and falls back to two, so more would be mislabelled runs.
+constexpr int kVdsmMaxMapsPerLight = 2;
+
 struct Options {
     std::string scene;
     std::filesystem::path contentFolder = cli::defaultContentFolder();
     std::string technique = "vdsm";
+    // ParallelSplitShadowMap's settings; an unset one keeps OSG's default.
+    int splits = 3;
+    std::string splitScheme = "exp";
+    std::optional<float> maxFar;
+    std::optional<float> splitMinNear;
+    std::optional<float> moveBehind;
+    std::optional<glm::vec2> polygonOffset;
+    /// An option given that only pssm reads, to reject it with another technique.
+    std::string pssmOption;
+    /// ViewDependentShadowMap's maps per light; unset keeps OSG's defaults (one map).
+    std::optional<int> cascades;
     glm::ivec2 size{640, 480};
     int mapSize = 2048;
     int frames = 20;
@@ -55,7 +74,16 @@ constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PR
   --scene FILE     .gltf/.glb path, or a scene name (content/scenes/NAME.gltf, else corpus/NAME.glb)
   --out PREFIX     writes PREFIX.json, PREFIX.png (shadowed frame) and PREFIX.visibility.pfm
   --technique T    vdsm (ViewDependentShadowMap), sm (ShadowMap), lispsm (LightSpacePerspectiveShadowMapVB),
-                   ssm (SoftShadowMap)                             [vdsm]
+                   ssm (SoftShadowMap), pssm (ParallelSplitShadowMap) [vdsm]
+  --cascades N     vdsm: maps per light, 1..2 (OSG 3.6's maximum), cascaded hint [OSG's: one map]
+  --splits N       pssm: splits of the view frustum, one map each, 1..4  [3]
+  --split-scheme S pssm: exp or linear split distances             [exp]
+  --max-far D      pssm: shadows end at this view distance (setMaxFarDistance) [the camera's far]
+  --split-min-near D  pssm: casters up to D beyond a split, towards the light, still cast
+                   (setMinNearDistanceForSplits)                   [5]
+  --move-behind D  pssm: split frusta start D scene units behind the camera
+                   (setMoveVCamBehindRCamFactor)                   [0]
+  --polygon-offset F,U  pssm: glPolygonOffset(F, U) while rendering its maps [none]
   --size WxH       image size in pixels, 1..16384 each             [640x480]
   --map-size N     shadow map resolution, 16..16384                [2048]
   --frames N       timed frames per pass, 1..1000                  [20]
@@ -84,10 +112,46 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--technique") {
             options.technique = value();
             if (options.technique != "vdsm" && options.technique != "sm" && options.technique != "lispsm" &&
-                options.technique != "ssm") {
+                options.technique != "ssm" && options.technique != "pssm") {
                 usageError("--technique: unknown technique '" + options.technique +
-                           "' (vdsm, sm, lispsm, ssm)");
+                           "' (vdsm, sm, lispsm, ssm, pssm)");
             }
+        } else if (arg == "--cascades") {
+            const int cascades = cli::integerIn(arg, value(), 1, 4);
+            if (cascades > kVdsmMaxMapsPerLight) {
+                usageError("--cascades: OpenSceneGraph 3.6's ViewDependentShadowMap renders at most " +
+                           std::to_string(kVdsmMaxMapsPerLight) + " maps per light (it would draw " +
+                           std::to_string(kVdsmMaxMapsPerLight) + ", not " + std::to_string(cascades) +
+                           "); for more splits use --technique pssm --splits " + std::to_string(cascades));
+            }
+            options.cascades = cascades;
+        } else if (arg == "--splits") {
+            options.splits = cli::integerIn(arg, value(), 1, 4);
+            options.pssmOption = arg;
+        } else if (arg == "--split-scheme") {
+            options.splitScheme = value();
+            if (options.splitScheme != "exp" && options.splitScheme != "linear") {
+                usageError("--split-scheme: unknown scheme '" + options.splitScheme + "' (exp, linear)");
+            }
+            options.pssmOption = arg;
+        } else if (arg == "--max-far") {
+            options.maxFar = cli::numberIn(arg, value(), 1e-3f, 1e9f);
+            options.pssmOption = arg;
+        } else if (arg == "--split-min-near") {
+            options.splitMinNear = cli::numberIn(arg, value(), 0.0f, 1e9f);
+            options.pssmOption = arg;
+        } else if (arg == "--move-behind") {
+            options.moveBehind = cli::numberIn(arg, value(), 0.0f, 1e6f);
+            options.pssmOption = arg;
+        } else if (arg == "--polygon-offset") {
+            const std::string text = value();
+            const auto comma = text.find(',');
+            if (comma == std::string::npos) {
+                usageError("--polygon-offset: '" + text + "' is not FACTOR,UNITS");
+            }
+            options.polygonOffset = glm::vec2(cli::numberIn(arg, text.substr(0, comma), -1e4f, 1e4f),
+                                              cli::numberIn(arg, text.substr(comma + 1), -1e4f, 1e4f));
+            options.pssmOption = arg;
         } else if (arg == "--size") {
             options.size = cli::sizeIn("--size", value(), 1, 16384);
         } else if (arg == "--map-size") {
@@ -117,6 +181,12 @@ Options parse(int argc, char** argv) {
     }
     if (options.outPrefix.empty()) {
         usageError("--out is required");
+    }
+    if (!options.pssmOption.empty() && options.technique != "pssm") {
+        usageError(options.pssmOption + " applies to --technique pssm only");
+    }
+    if (options.cascades && options.technique != "vdsm") {
+        usageError("--cascades applies to --technique vdsm only");
     }
     return options;
 }
@@ -153,6 +223,8 @@ struct FrameEnd {
     std::string renderer;
     bool captureNext = false;
     std::optional<osgpeer::RgbFrame> captured;
+    /// The projection the captured frame's last drawables were drawn with: the main view's.
+    osg::Matrixd drawnProjection;
 };
 
 // Runs after everything the camera drew, shadow passes included: glFinish makes the timed frame include the
@@ -160,7 +232,7 @@ struct FrameEnd {
 class FinishAndCapture : public osg::Camera::DrawCallback {
 public:
     explicit FinishAndCapture(FrameEnd& state) : state_(state) {}
-    void operator()(osg::RenderInfo& /*renderInfo*/) const override {
+    void operator()(osg::RenderInfo& renderInfo) const override {
         glFinish();
         if (state_.renderer.empty()) {
             const GLubyte* renderer = glGetString(GL_RENDERER);
@@ -177,6 +249,7 @@ public:
             if (glGetError() == GL_NO_ERROR) {
                 state_.captured = std::move(frame);
             }
+            state_.drawnProjection = renderInfo.getState()->getProjectionMatrix();
             state_.captureNext = false;
         }
     }
@@ -230,6 +303,8 @@ Context createContext(glm::ivec2 size, const std::string& surface) {
 struct Technique {
     osg::ref_ptr<osgShadow::ShadowTechnique> technique;
     std::string osgClass;
+    /// Shadow maps rendered per frame.
+    int shadowMaps = 1;
     /// The settings that shape the result, as the report records them.
     nlohmann::ordered_json settings;
 };
@@ -238,21 +313,93 @@ const char* toString(osgShadow::ShadowSettings::ShadowMapProjectionHint hint) {
     return hint == osgShadow::ShadowSettings::ORTHOGRAPHIC_SHADOW_MAP ? "orthographic" : "perspective";
 }
 
-Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::OsgScene& scene,
+const char* toString(osgShadow::ShadowSettings::MultipleShadowMapHint hint) {
+    return hint == osgShadow::ShadowSettings::CASCADED ? "cascaded" : "parallel split";
+}
+
+Technique makeParallelSplit(const Options& options, const osgpeer::OsgScene& scene,
+                            const std::string& sceneName) {
+    // ParallelSplitShadowMap reads field of view, aspect, near and far back from the main camera's
+    // projection with osg::Matrixd::getPerspective, which fails for an orthographic one and leaves them
+    // unset.
+    double fovy = 0.0;
+    double aspect = 0.0;
+    double zNear = 0.0;
+    double zFar = 0.0;
+    if (!scene.projection.getPerspective(fovy, aspect, zNear, zFar)) {
+        throw osgpeer::PeerError(sceneName + ": --technique pssm needs a perspective camera "
+                                             "(ParallelSplitShadowMap splits a perspective view frustum)");
+    }
+    osg::ref_ptr<osgShadow::ParallelSplitShadowMap> pssm =
+        new osgShadow::ParallelSplitShadowMap(nullptr, options.splits);
+    pssm->setTextureResolution(static_cast<unsigned int>(options.mapSize));
+    // The user light is read in world space, as the scene's light is given; without one, PSSM would take
+    // the last light the cull found.
+    pssm->setUserLight(scene.light->getLight());
+    // Its shader: colour = lit * (1 + bias.x) * (1 - bias.y * (1 - shadow)). OSG's (0.1, 0.3) brightens lit
+    // surfaces by 10% and leaves the umbra at 77%; (0, 1) gives lit * shadow, so shadowed/unshadowed is the
+    // shadow term.
+    pssm->setAmbientBias(osg::Vec2(0.0f, 1.0f));
+    pssm->setSplitCalculationMode(options.splitScheme == "linear"
+                                      ? osgShadow::ParallelSplitShadowMap::SPLIT_LINEAR
+                                      : osgShadow::ParallelSplitShadowMap::SPLIT_EXP);
+    if (options.maxFar) {
+        pssm->setMaxFarDistance(*options.maxFar);
+    }
+    if (options.splitMinNear) {
+        pssm->setMinNearDistanceForSplits(*options.splitMinNear);
+    }
+    if (options.moveBehind) {
+        pssm->setMoveVCamBehindRCamFactor(*options.moveBehind);
+    }
+    if (options.polygonOffset) {
+        pssm->setPolygonOffset(osg::Vec2f(options.polygonOffset->x, options.polygonOffset->y));
+    }
+    const nlohmann::ordered_json record = {
+        {"splits", options.splits},
+        {"splitCalculationMode", options.splitScheme == "linear" ? "linear" : "exponential"},
+        // OSG's exponential scheme has a fixed exponent: split i of N ends at near + (far - near) (i/N)^1.66.
+        {"splitDistances",
+         options.splitScheme == "linear" ? "near + (far - near) i/N" : "near + (far - near) (i/N)^1.66"},
+        {"maxFarDistance", options.maxFar ? std::min<double>(*options.maxFar, zFar) : zFar},
+        {"minNearDistanceForSplits", pssm->getMinNearDistanceForSplits()},
+        {"moveVCamBehindRCamFactor", pssm->getMoveVCamBehindRCamFactor()},
+        // null: OSG applies no polygon offset unless one is set.
+        {"polygonOffset", options.polygonOffset
+                              ? nlohmann::ordered_json{options.polygonOffset->x, options.polygonOffset->y}
+                              : nlohmann::ordered_json()},
+        {"textureResolution", pssm->getTextureResolution()},
+        {"ambientBias", {pssm->getAmbientBias().x(), pssm->getAmbientBias().y()}},
+        {"shadowedColour", "gl_Color * (1 + ambientBias.x) * (1 - ambientBias.y * (1 - shadow)) (gl_Color * "
+                           "shadow here)"}};
+    return {pssm, "osgShadow::ParallelSplitShadowMap", options.splits, record};
+}
+
+Technique makeTechnique(const Options& options, const osgpeer::OsgScene& scene, const std::string& sceneName,
                         osgShadow::ShadowedScene& shadowed) {
-    const auto side = static_cast<short>(mapSize);
+    const std::string& name = options.technique;
+    const auto side = static_cast<short>(options.mapSize);
+    if (name == "pssm") {
+        return makeParallelSplit(options, scene, sceneName);
+    }
     if (name == "vdsm") {
         osgShadow::ShadowSettings* settings = shadowed.getShadowSettings();
         settings->setTextureSize(osg::Vec2s(side, side));
         settings->setLightNum(static_cast<int>(scene.light->getLight()->getLightNum()));
+        if (options.cascades) {
+            settings->setMultipleShadowMapHint(osgShadow::ShadowSettings::CASCADED);
+            settings->setNumShadowMapsPerLight(static_cast<unsigned int>(*options.cascades));
+        }
         // Its shader shades shadowed fragments with gl_FrontLightModelProduct.sceneColor (emission +
         // ambient), which our zero ambient and emission make black: no bias to undo.
         const nlohmann::ordered_json record = {
             {"shadowMapProjectionHint", toString(settings->getShadowMapProjectionHint())},
             {"numShadowMapsPerLight", settings->getNumShadowMapsPerLight()},
+            {"multipleShadowMapHint", toString(settings->getMultipleShadowMapHint())},
             {"minimumShadowMapNearFarRatio", settings->getMinimumShadowMapNearFarRatio()},
             {"shadowedColour", "gl_FrontLightModelProduct.sceneColor (0 here)"}};
-        return {new osgShadow::ViewDependentShadowMap, "osgShadow::ViewDependentShadowMap", record};
+        return {new osgShadow::ViewDependentShadowMap, "osgShadow::ViewDependentShadowMap",
+                static_cast<int>(settings->getNumShadowMapsPerLight()), record};
     }
     if (name == "sm" || name == "ssm") {
         osg::ref_ptr<osgShadow::ShadowMap> map;
@@ -273,7 +420,7 @@ Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::Osg
             record["softnessWidth"] = soft->getSoftnessWidth();
             record["jitteringScale"] = soft->getJitteringScale();
         }
-        return {map, name == "sm" ? "osgShadow::ShadowMap" : "osgShadow::SoftShadowMap", record};
+        return {map, name == "sm" ? "osgShadow::ShadowMap" : "osgShadow::SoftShadowMap", 1, record};
     }
     osg::ref_ptr<osgShadow::LightSpacePerspectiveShadowMapVB> lispsm =
         new osgShadow::LightSpacePerspectiveShadowMapVB;
@@ -286,16 +433,30 @@ Technique makeTechnique(const std::string& name, int mapSize, const osgpeer::Osg
         {"maxFarPlane", lispsm->getMaxFarPlane()},
         {"shadowedColour",
          "gl_FrontLightModelProduct.sceneColor + gl_FrontLightProduct[0].ambient (0 here)"}};
-    return {lispsm, "osgShadow::LightSpacePerspectiveShadowMapVB", record};
+    return {lispsm, "osgShadow::LightSpacePerspectiveShadowMapVB", 1, record};
 }
 
 double milliseconds(std::chrono::steady_clock::duration duration) {
     return std::chrono::duration<double, std::milli>(duration).count();
 }
 
-/// Renders `graph` for `warmup` + `frames` frames (timing the latter) and one more that is read back.
+bool nearlyEqual(const osg::Matrixd& a, const osg::Matrixd& b) {
+    for (int row = 0; row < 4; ++row) {
+        for (int column = 0; column < 4; ++column) {
+            const double scale = std::max({1.0, std::abs(a(row, column)), std::abs(b(row, column))});
+            if (std::abs(a(row, column) - b(row, column)) > 1e-9 * scale) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+/// Renders `graph` for `warmup` + `frames` frames (timing the latter) and one more that is read back, which
+/// must have been drawn with `projection`.
 std::vector<double> runPass(osgViewer::Viewer& viewer, osg::Node* graph, const Options& options,
-                            FrameEnd& end, osgpeer::RgbFrame& frame, const char* pass) {
+                            FrameEnd& end, osgpeer::RgbFrame& frame, const char* pass,
+                            const osg::Matrixd& projection) {
     viewer.setSceneData(graph);
     for (int i = 0; i < options.warmup; ++i) {
         viewer.frame();
@@ -315,6 +476,13 @@ std::vector<double> runPass(osgViewer::Viewer& viewer, osg::Node* graph, const O
                        " frame could not be read back (glReadPixels failed or the "
                        "camera did not draw)");
     }
+    // Shadow techniques cull with near/far planes of their own; the main view must keep the scene camera's
+    // projection, or depth precision and clipping would differ from our renderer's.
+    if (!nearlyEqual(end.drawnProjection, projection)) {
+        throw RunError(std::string("the ") + pass +
+                       " frame was drawn with a projection other than the scene camera's (OpenSceneGraph "
+                       "changed its near/far planes)");
+    }
     frame = std::move(*end.captured);
     end.captured.reset();
     return times;
@@ -322,6 +490,23 @@ std::vector<double> runPass(osgViewer::Viewer& viewer, osg::Node* graph, const O
 
 nlohmann::ordered_json toJson(const osgpeer::FrameTimes& times) {
     return {{"median", times.median}, {"min", times.min}, {"max", times.max}};
+}
+
+/// The main view's projection kind and near/far planes, as every pass was drawn with them.
+nlohmann::ordered_json cameraRecord(const osg::Matrixd& projection) {
+    double left = 0.0;
+    double right = 0.0;
+    double bottom = 0.0;
+    double top = 0.0;
+    double zNear = 0.0;
+    double zFar = 0.0;
+    const bool perspective = projection(3, 3) == 0.0;
+    if (perspective) {
+        projection.getFrustum(left, right, bottom, top, zNear, zFar);
+    } else {
+        projection.getOrtho(left, right, bottom, top, zNear, zFar);
+    }
+    return {{"projection", perspective ? "perspective" : "orthographic"}, {"near", zNear}, {"far", zFar}};
 }
 
 } // namespace
@@ -342,7 +527,7 @@ int main(int argc, char** argv) {
 
         osg::ref_ptr<osg::Group> unshadowed = osgpeer::unshadowedGraph(scene);
         osg::ref_ptr<osgShadow::ShadowedScene> shadowedScene = new osgShadow::ShadowedScene;
-        const Technique technique = makeTechnique(options.technique, options.mapSize, scene, *shadowedScene);
+        const Technique technique = makeTechnique(options, scene, path.string(), *shadowedScene);
         shadowedScene->setShadowTechnique(technique.technique.get());
         shadowedScene->addChild(scene.light);
         shadowedScene->addChild(scene.meshes);
@@ -383,9 +568,9 @@ int main(int argc, char** argv) {
         osgpeer::RgbFrame unshadowedFrame;
         osgpeer::RgbFrame shadowedFrame;
         const osgpeer::FrameTimes unshadowedTimes = osgpeer::summarize(
-            runPass(viewer, unshadowed.get(), options, end, unshadowedFrame, "unshadowed"));
-        const osgpeer::FrameTimes shadowedTimes =
-            osgpeer::summarize(runPass(viewer, shadowed.get(), options, end, shadowedFrame, "shadowed"));
+            runPass(viewer, unshadowed.get(), options, end, unshadowedFrame, "unshadowed", scene.projection));
+        const osgpeer::FrameTimes shadowedTimes = osgpeer::summarize(
+            runPass(viewer, shadowed.get(), options, end, shadowedFrame, "shadowed", scene.projection));
 
         const std::string prefix = options.outPrefix;
         const std::vector<float> visibility = osgpeer::visibility(shadowedFrame, unshadowedFrame);
@@ -399,6 +584,8 @@ int main(int argc, char** argv) {
             {"timingMethod", "glFinish + steady clock"},
             {"size", {options.size.x, options.size.y}},
             {"mapSize", options.mapSize},
+            {"shadowMaps", technique.shadowMaps},
+            {"camera", cameraRecord(scene.projection)},
             {"frames", options.frames},
             {"warmup", options.warmup},
             {"unshadowedMs", toJson(unshadowedTimes)},
@@ -419,9 +606,13 @@ int main(int argc, char** argv) {
         std::ostringstream summary;
         summary << kProgram << ": " << options.technique << " (" << technique.osgClass << ") "
                 << path.filename().string() << " " << options.size.x << "x" << options.size.y << " map "
-                << options.mapSize << ": median " << unshadowedTimes.median << " ms unshadowed, "
-                << shadowedTimes.median << " ms shadowed (" << end.renderer << ", "
-                << (context.pbuffer ? "pbuffer" : "window") << "); wrote " << prefix << ".json, .png, "
+                << options.mapSize;
+        if (technique.shadowMaps > 1) {
+            summary << " x" << technique.shadowMaps;
+        }
+        summary << ": median " << unshadowedTimes.median << " ms unshadowed, " << shadowedTimes.median
+                << " ms shadowed (" << end.renderer << ", " << (context.pbuffer ? "pbuffer" : "window")
+                << "); wrote " << prefix << ".json, .png, "
                 << ".visibility.pfm\n";
         std::cout << summary.str();
         return 0;

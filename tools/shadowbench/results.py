@@ -3,6 +3,7 @@
 
 usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER
 """
+import itertools
 import json
 import pathlib
 import sys
@@ -194,7 +195,7 @@ def frame_ms(r):
 def plot_frames(rows, scene, path):
     """Whole-frame time versus MAE, ours and the osgShadow peer's rows in one plot."""
     fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
-    peers = iter("XP*D")
+    peers = itertools.cycle("XP*Dd+x1")  # a marker per peer run (vdsm .. pssm4, vdsm-csm2), reused past eight
     for n, r in enumerate(sorted(rows, key=lambda r: r["label"])):
         peer = bool(r["peer"])
         ax.scatter([frame_ms(r)], [r["mae"]], s=45 if peer else 20, marker=next(peers) if peer else "os^vD<>P*h"[n % 10],

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <system_error>
 
 namespace shadowbench {
 
@@ -73,9 +74,20 @@ std::vector<float> readPfm(const std::filesystem::path& path, glm::ivec2 size) {
 
 } // namespace
 
-const std::vector<std::string>& peerTechniques() {
-    static const std::vector<std::string> techniques = {"vdsm", "sm", "lispsm", "ssm"};
-    return techniques;
+std::vector<std::string> peerRunNames(const std::filesystem::path& folder, const std::string& scene) {
+    std::vector<std::string> names = {"vdsm", "sm", "lispsm", "ssm"};
+    std::vector<std::string> others;
+    std::error_code error; // a missing folder ends the iteration at once
+    for (const auto& entry : std::filesystem::directory_iterator(folder / scene, error)) {
+        const std::string stem = entry.path().stem().string();
+        if (entry.path().extension() == ".json" &&
+            std::find(names.begin(), names.end(), stem) == names.end()) {
+            others.push_back(stem);
+        }
+    }
+    std::sort(others.begin(), others.end());
+    names.insert(names.end(), others.begin(), others.end());
+    return names;
 }
 
 std::optional<PeerRun> loadPeerRun(const std::filesystem::path& folder, const std::string& scene,
@@ -94,6 +106,7 @@ std::optional<PeerRun> loadPeerRun(const std::filesystem::path& folder, const st
     run.osgClass = document.value("osgClass", std::string());
     run.renderer = document.value("renderer", std::string());
     run.mapSize = document.value("mapSize", 0);
+    run.shadowMaps = document.value("shadowMaps", 1);
     run.shadowed = timing(document, "shadowedMs", jsonPath);
     run.unshadowed = timing(document, "unshadowedMs", jsonPath);
     run.visibility = readPfm(folder / scene / (technique + ".visibility.pfm"), size);

@@ -48,8 +48,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
                         <label>.png (shaded), <label>-classes.png, <label>-error.png, truth.png (the
                         truth's classes) and side-by-side.png
   --content DIR         content folder                                      [installed or source content/]
-  --peer DIR            add the OpenSceneGraph peer's runs found in DIR/<scene>/<technique>.json and
-                        .visibility.pfm (tools/osgpeer; vdsm, sm, lispsm, ssm) as rows "osg-<technique>")";
+  --peer DIR            add the OpenSceneGraph peer's runs found in DIR/<scene>/<name>.json and
+                        .visibility.pfm (tools/osgpeer; vdsm, sm, lispsm, ssm, then any other name, e.g.
+                        pssm3, vdsm-csm2) as rows "osg-<name>")";
 
 constexpr cli::Tool kTool{"gs-shadowbench", kUsage};
 
@@ -321,7 +322,8 @@ int main(int argc, char** argv) {
             if (options.peerFolder) {
                 // Our boundary band at the peer's map size, measured once per size rather than once per run.
                 std::map<int, int> bandPixelsAtMapSize;
-                for (const std::string& technique : shadowbench::peerTechniques()) {
+                for (const std::string& technique :
+                     shadowbench::peerRunNames(*options.peerFolder, scene->name())) {
                     const auto run = shadowbench::loadPeerRun(*options.peerFolder, scene->name(), technique,
                                                               options.bench.size);
                     if (!run) {
@@ -342,7 +344,8 @@ int main(int argc, char** argv) {
                         cost.peerUnshadowedFrame = run->unshadowed;
                     }
                     const shadowbench::ShadowMetrics& m = results.back().metrics;
-                    std::cout << scene->name() << " osg-" << technique << " (" << run->osgClass << "): acne "
+                    std::cout << scene->name() << " osg-" << technique << " (" << run->osgClass << ", "
+                              << run->shadowMaps << (run->shadowMaps == 1 ? " map" : " maps") << "): acne "
                               << std::setprecision(3) << m.acneRate << ", leak " << m.leakRate << ", MAE "
                               << m.meanAbsoluteError << ", frame " << run->shadowed.median << " ms"
                               << ", " << results.back().peerUnlitReceivers << " receivers unlit in its frame"
