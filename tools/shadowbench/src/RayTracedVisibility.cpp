@@ -6,6 +6,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -136,7 +137,7 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                                          std::span<const std::uint8_t> covered,
                                          const engine::FrameLight& light, float radius, int samplesPerAxis,
                                          std::span<float> visibility) const {
-    const float offset = 1e-4f * sceneSize_;
+    const float sceneOffset = 1e-4f * sceneSize_;
     const int samples = std::max(samplesPerAxis, 1);
     std::vector<glm::vec3> origins;
     std::vector<glm::vec3> directions;
@@ -147,6 +148,11 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
         if (!covered[i]) {
             continue;
         }
+        const glm::vec3 magnitude = glm::abs(positions[i]);
+        const float offset =
+            viewer_ ? std::max(std::min(sceneOffset, 1e-4f * glm::length(positions[i] - *viewer_)),
+                               1e-5f * std::max({magnitude.x, magnitude.y, magnitude.z}))
+                    : sceneOffset;
         glm::vec3 direction;
         float length = 0.0f;
         towardsLight(light, positions[i], direction, length);

@@ -131,7 +131,8 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
     pixelWorldSize_ = static_cast<float>(median(pixelSizes));
     concave_ = concaveMask(options.size, positions_, normals_, covered, 0.5f);
 
-    const RayTracedVisibility tracer(scene_);
+    RayTracedVisibility tracer(scene_);
+    tracer.setViewer(glm::vec3(scene_.worldMatrix(camera_)[3]));
     truth_.resize(positions.size());
     if (options.softSamplesPerAxis > 0) {
         tracer.softVisibility(positions_, normals_, covered, light_, options.softRadius,

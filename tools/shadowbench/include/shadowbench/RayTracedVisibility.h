@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace shadowbench {
@@ -22,8 +23,11 @@ public:
 
     /// @brief Hard visibility of a sun, spot or point light: 1 where the segment from the surface to the
     /// light (for a sun: the ray towards it) is free, 0 where it is blocked. Pixels with `covered[i] == 0`
-    /// get 0. The ray starts a small offset (1e-4 of the scene size) along `normals[i]`, so a surface never
-    /// shadows itself by rounding.
+    /// get 0. The ray starts a small offset along `normals[i]`, so a surface never shadows itself by
+    /// rounding: 1e-4 of the scene size, or, once setViewer names where the pixels are seen from, 1e-4 of the
+    /// distance from it (a tenth of a pixel's footprint or less), so the offset does not shorten shadows near
+    /// the camera in a kilometre-wide scene; never below 1e-5 of the point's largest coordinate (float's
+    /// resolution there, with margin).
     void hardVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light,
                         std::span<float> visibility) const;
@@ -34,6 +38,9 @@ public:
     void softVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light, float radius,
                         int samplesPerAxis, std::span<float> visibility) const;
+
+    /// @brief Sizes the ray offsets by the distance from `eye` (see hardVisibility).
+    void setViewer(const glm::vec3& eye) { viewer_ = eye; }
 
     /// @brief Diagonal of the scene's bounding box (world units).
     [[nodiscard]] float sceneSize() const { return sceneSize_; }
@@ -47,6 +54,7 @@ private:
     void* device_ = nullptr;
     void* scene_ = nullptr;
     float sceneSize_ = 1.0f;
+    std::optional<glm::vec3> viewer_;
 };
 
 } // namespace shadowbench
