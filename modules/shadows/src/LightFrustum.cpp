@@ -57,6 +57,82 @@ LightProjection perspectiveMap(const glm::mat4& view, float fov, float range, st
     return result;
 }
 
+/// The world-space corners of the view volume of `viewProjection` between clip depths `zLow` and `zHigh`.
+std::array<glm::vec3, 8> volumeCorners(const glm::mat4& viewProjection, float zLow, float zHigh) {
+    const glm::mat4 clipToWorld = glm::inverse(viewProjection);
+    std::array<glm::vec3, 8> corners{};
+    std::size_t i = 0;
+    for (const float z : {zLow, zHigh}) {
+        for (const float x : {-1.0f, 1.0f}) {
+            for (const float y : {-1.0f, 1.0f}) {
+                const glm::vec4 p = clipToWorld * glm::vec4(x, y, z, 1.0f);
+                corners[i++] = glm::vec3(p) / p.w;
+            }
+        }
+    }
+    return corners;
+}
+
+/// Whether `box` meets the view volume of `viewProjection`, by separating planes of either: the volume's six
+/// (engine::intersectsClipVolume) and the box's six, which reject a large box beside a small volume that no
+/// single plane of the volume separates.
+bool meetsVolume(const Aabb& box, const glm::mat4& viewProjection) {
+    if (box.empty() || !engine::intersectsClipVolume(box, viewProjection)) {
+        return false;
+    }
+    const std::array<glm::vec3, 8> corners = volumeCorners(viewProjection, -1.0f, 1.0f);
+    for (int axis = 0; axis < 3; ++axis) {
+        bool allBelow = true;
+        bool allAbove = true;
+        for (const glm::vec3& corner : corners) {
+            allBelow = allBelow && corner[axis] < box.min[axis];
+            allAbove = allAbove && corner[axis] > box.max[axis];
+        }
+        if (allBelow || allAbove) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/// The part of `box` the view volume of `viewProjection` can see, bounded by a box: `box` cut to the bounds
+/// of the volume's slice between the nearest and farthest clip depths of the box's corners. Empty when the
+/// volume does not meet the box. A ground plane under a camera looking down is then the patch in view, not
+/// the whole plane.
+Aabb visiblePart(const Aabb& box, const glm::mat4& viewProjection) {
+    if (!meetsVolume(box, viewProjection)) {
+        return {};
+    }
+    float zLow = 1.0f;
+    float zHigh = -1.0f;
+    for (const glm::vec3& corner : box.corners()) {
+        const glm::vec4 clip = viewProjection * glm::vec4(corner, 1.0f);
+        if (clip.w > 0.0f) {
+            zLow = std::min(zLow, clip.z / clip.w);
+            zHigh = std::max(zHigh, clip.z / clip.w);
+        } else {
+            zLow = -1.0f; // the box reaches behind the eye: its nearest visible depth is the near plane
+        }
+    }
+    zLow = std::clamp(zLow, -1.0f, 1.0f);
+    zHigh = std::clamp(zHigh, -1.0f, 1.0f);
+    if (zLow > zHigh) {
+        return {};
+    }
+    Aabb slice;
+    for (const glm::vec3& corner : volumeCorners(viewProjection, zLow, zHigh)) {
+        slice.extend(corner);
+    }
+    Aabb part;
+    const glm::vec3 low = glm::max(box.min, slice.min);
+    const glm::vec3 high = glm::min(box.max, slice.max);
+    if (glm::all(glm::lessThanEqual(low, high))) {
+        part.extend(low);
+        part.extend(high);
+    }
+    return part;
+}
+
 /// The corners of a projection's view volume in view space, and its near and far view depths.
 struct FrustumCorners {
     std::array<glm::vec3, 4> nearPoints{};
@@ -321,9 +397,9 @@ LightProjection fitPointLightFace(const glm::vec3& position, int face, float ran
     std::vector<Aabb> seen;
     bool receives = false;
     for (const Aabb& box : boxes) {
-        if (!box.empty() && engine::intersectsClipVolume(box, faceVolume)) {
+        if (meetsVolume(box, faceVolume)) {
             seen.push_back(box);
-            receives = receives || engine::intersectsClipVolume(box, cameraViewProjection);
+            receives = receives || meetsVolume(visiblePart(box, cameraViewProjection), faceVolume);
         }
     }
     if (!receives) {
