@@ -224,8 +224,24 @@ TEST(CascadedShadowsGLTest, MoreCascadesGiveFinerTexelsNearTheCamera) {
             EXPECT_GT(m.projections[c].texelScale, m.projections[c - 1].texelScale);
         }
     }
-    // One map spans the whole 300 m view; four (split weight 0.5) put their first over its first 38 m.
+    // One map spans the whole 300 m view; four (split weight 0.9) put their first over its first 9 m.
     EXPECT_LT(nearest.back(), nearest.front() / 4.0f);
+}
+
+TEST(CascadedShadowsGLTest, TheAutomaticCountGivesALongViewCascadesAndAModelOne) {
+    engine::EntityId camera = engine::kNoEntity;
+    const engine::Scene ground = openGround(camera);
+    ShadowSettings settings; // cascadeCount 0: automatic
+    settings.resolution = 128;
+    EXPECT_EQ(ShadowMeasurement::render(ground, camera, settings, {64, 36}).projections.size(), 2u); // 0.3-300 m
+    engine::Scene model = testsupport::boxOnPlane(4.0f, 1.0f);
+    const auto sun = model.create("sun");
+    model.entity(sun).light = engine::LightComponent{};
+    model.entity(sun).transform = engine::Transform::lookAt(kToSun, {0, 0, 0});
+    const auto view = model.create("camera");
+    model.entity(view).camera = engine::CameraComponent{};
+    model.entity(view).transform = engine::Transform::lookAt({0.0f, 3.0f, 4.0f}, {0.0f, 0.0f, 0.0f});
+    EXPECT_EQ(ShadowMeasurement::render(model, view, settings, {64, 36}).projections.size(), 1u);
 }
 
 TEST(CascadedShadowsGLTest, CascadesWithoutVisibleReceiversAreNotDrawn) {

@@ -77,6 +77,16 @@ TEST(CascadeSplitsTest, WeightBlendsUniformAndLogarithmicSchemes) {
     EXPECT_NEAR(half[1], 0.5f * (uniform[1] + logarithmic[1]), 1e-3f);
 }
 
+TEST(CascadeSplitsTest, AutomaticCountAddsACascadePerDecadeBeyondAThousandToOne) {
+    EXPECT_EQ(automaticCascadeCount({2.0f, 19.0f}), 1);   // a model on a table
+    EXPECT_EQ(automaticCascadeCount({1.0f, 999.0f}), 1);  // a model on a ground plane
+    EXPECT_EQ(automaticCascadeCount({0.3f, 600.0f}), 2);  // a street
+    EXPECT_EQ(automaticCascadeCount({0.3f, 4000.0f}), 3); // a landscape
+    EXPECT_EQ(automaticCascadeCount({1e-3f, 1e6f}), kMaxCascades);
+    EXPECT_EQ(automaticCascadeCount({0.0f, 10.0f}), 1); // degenerate ranges get the one fitted map
+    EXPECT_EQ(automaticCascadeCount({5.0f, 5.0f}), 1);
+}
+
 TEST(CascadeFitTest, SphereHoldsTheWholeSliceAndIgnoresCameraPose) {
     const FitView a = camera({0, 1.8f, 0}, {0, 1.5f, -10});
     const FitView b = camera({123.4f, 7.0f, -55.5f}, {-300, -20, 40}); // moved and turned
@@ -264,7 +274,7 @@ TEST(CascadeSettingsTest, BadCascadeSettingsAreRefusedNamingTheField) {
     };
     EXPECT_NE(problems([](ShadowSettings& s) { s.cascadeCount = 5; }).find("cascadeCount"),
               std::string::npos);
-    EXPECT_NE(problems([](ShadowSettings& s) { s.cascadeCount = 0; }).find("cascadeCount"),
+    EXPECT_NE(problems([](ShadowSettings& s) { s.cascadeCount = -1; }).find("cascadeCount"),
               std::string::npos);
     EXPECT_NE(problems([](ShadowSettings& s) {
                   s.cascadeCount = 3;
@@ -277,4 +287,5 @@ TEST(CascadeSettingsTest, BadCascadeSettingsAreRefusedNamingTheField) {
               }).find("cascadeBlend"),
               std::string::npos);
     EXPECT_EQ(problems([](ShadowSettings& s) { s.cascadeCount = 4; }), "");
+    EXPECT_EQ(problems([](ShadowSettings& s) { s.cascadeCount = 0; }), ""); // automatic
 }

@@ -235,8 +235,10 @@ int main(int argc, char** argv) {
         engine.renderer().chunkLimits.maxTriangles = options.chunkTriangles;
         engine.renderer().culling = options.culling;
         engine.renderer().depthPrePass = options.depthPrePass;
+        const shadows::ShadowModule* shadowModule = nullptr;
         if (options.shadows) {
-            engine.addModule(std::make_unique<shadows::ShadowModule>(*options.shadows));
+            shadowModule = &static_cast<const shadows::ShadowModule&>(
+                engine.addModule(std::make_unique<shadows::ShadowModule>(*options.shadows)));
         }
         for (const std::string& name : options.modules) {
             engine.loadModule(name);
@@ -287,6 +289,8 @@ int main(int argc, char** argv) {
                << "  \"programsCompiled\": " << engine.programs().compileCount() << ",\n"
                << "  \"shadowTechnique\": \""
                << (options.shadows ? shadows::toString(options.shadows->technique) : "none") << "\",\n"
+               << "  \"shadowMaps\": " << (shadowModule ? shadowModule->stats().shadowMaps : 0) << ",\n"
+               << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n"
                << "  \"modules\": [";
         for (std::size_t i = 0; i < options.modules.size(); ++i) {
             report << (i ? ", " : "") << '"' << jsonEscape(options.modules[i]) << '"';

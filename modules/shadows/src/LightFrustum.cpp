@@ -271,6 +271,14 @@ std::optional<glm::vec2> visibleDepthRange(const FitView& view, std::span<const 
                       glm::vec2(corners.far));
 }
 
+int automaticCascadeCount(glm::vec2 depthRange) {
+    if (!(depthRange.x > 0.0f) || !(depthRange.y > depthRange.x)) {
+        return 1;
+    }
+    const float decades = std::log10(depthRange.y / depthRange.x);
+    return std::clamp(static_cast<int>(std::floor(decades)) - 1, 1, kMaxCascades);
+}
+
 bool hasReceiversBetween(const FitView& view, std::span<const Aabb> boxes, float near, float far) {
     const glm::mat4 viewProjection = view.projection * view.view;
     for (const Aabb& box : boxes) {

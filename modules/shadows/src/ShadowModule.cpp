@@ -173,33 +173,32 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
             return static_cast<std::int32_t>(any ? drawn : LightMapsKind::None);
         };
         switch (light.light.type) {
-        case engine::LightType::Directional:
-            if (settings_.cascadeCount == 1) {
+        case engine::LightType::Directional: {
+            const std::optional<glm::vec2> range = visibleDepthRange(fit, boxes);
+            const int count = settings_.cascadeCount > 0 ? settings_.cascadeCount
+                                                         : automaticCascadeCount(range.value_or(glm::vec2(1.0f)));
+            if (count == 1 || !range) {
                 maps.slots.x = add(fitDirectionalLight(light.direction, fitViewProjection, boxes, resolution,
                                                        settings_.texelSnapping));
                 maps.kind.x = kind(LightMapsKind::Single);
                 break;
             }
-            if (const std::optional<glm::vec2> range = visibleDepthRange(fit, boxes)) {
-                const int count = settings_.cascadeCount;
-                const std::vector<float> splits =
-                    cascadeSplits(range->x, range->y, count, settings_.cascadeSplitWeight);
-                for (int cascade = 0; cascade < count; ++cascade) {
-                    const auto c = static_cast<std::size_t>(cascade);
-                    // A cascade also covers the previous one's blend band, which fades into it.
-                    const float sliceNear =
-                        splits[c] -
-                        (cascade > 0 ? settings_.cascadeBlend * (splits[c] - splits[c - 1]) : 0.0f);
-                    maps.splitNear[cascade] = splits[c];
-                    maps.splitFar[cascade] = splits[c + 1];
-                    if (hasReceiversBetween(fit, boxes, sliceNear, splits[c + 1])) {
-                        maps.slots[cascade] = add(fitCascade(light.direction, fit, sliceNear, splits[c + 1],
-                                                             boxes, resolution, settings_.texelSnapping));
-                    }
+            const std::vector<float> splits = cascadeSplits(range->x, range->y, count, settings_.cascadeSplitWeight);
+            for (int cascade = 0; cascade < count; ++cascade) {
+                const auto c = static_cast<std::size_t>(cascade);
+                // A cascade also covers the previous one's blend band, which fades into it.
+                const float sliceNear =
+                    splits[c] - (cascade > 0 ? settings_.cascadeBlend * (splits[c] - splits[c - 1]) : 0.0f);
+                maps.splitNear[cascade] = splits[c];
+                maps.splitFar[cascade] = splits[c + 1];
+                if (hasReceiversBetween(fit, boxes, sliceNear, splits[c + 1])) {
+                    maps.slots[cascade] = add(fitCascade(light.direction, fit, sliceNear, splits[c + 1], boxes,
+                                                         resolution, settings_.texelSnapping));
                 }
-                maps.kind = glm::ivec4(kind(LightMapsKind::Cascades), count, 0, 0);
             }
+            maps.kind = glm::ivec4(kind(LightMapsKind::Cascades), count, 0, 0);
             break;
+        }
         case engine::LightType::Spot:
             maps.slots.x = add(fitSpotLight(light.position, light.direction, light.light.outerConeAngle,
                                             light.light.range, boxes, resolution));

@@ -53,7 +53,9 @@ LightProjection fitSpotLight(const glm::vec3& position, const glm::vec3& directi
 
 /// @brief The camera shadow maps are fitted to: world → view, and view → clip.
 struct FitView {
+    /// World → view space (the inverse of the camera's world matrix).
     glm::mat4 view{1.0f};
+    /// View → clip space.
     glm::mat4 projection{1.0f};
 };
 
@@ -72,13 +74,21 @@ std::vector<float> cascadeSplits(float near, float far, int count, float weight)
 /// while the camera moves). nullopt when no box is in view.
 std::optional<glm::vec2> visibleDepthRange(const FitView& view, std::span<const Aabb> boxes);
 
+/// @brief Cascades for visible receivers spanning view depths `depthRange`: one map below 1000:1, then one more
+/// per decade (2 below 10⁴:1, 3 below 10⁵:1, else kMaxCascades). Models on a ground plane (up to some hundreds
+/// to one) meet the accuracy floor with one map fitted to the receivers, at a third of the shadow pass that
+/// cascades cost; a landscape seen from the ground does not (docs/RESULTS.md, "Every light").
+int automaticCascadeCount(glm::vec2 depthRange);
+
 /// @brief Whether a box that intersects the view volume of `view` reaches view depths between `near` and
 /// `far`: a cascade over that slice would have a visible receiver.
 bool hasReceiversBetween(const FitView& view, std::span<const Aabb> boxes, float near, float far);
 
 /// @brief A sphere in view space.
 struct Sphere {
+    /// Centre, view space.
     glm::vec3 centre{0.0f};
+    /// Radius, world units.
     float radius = 0.0f;
 };
 

@@ -100,10 +100,11 @@ struct ShadowSettings {
     bool floorReceiverDepth = false;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
-    /// Cascades of each directional light's map (1: one map fitted to the visible receivers).
-    int cascadeCount = 1;
+    /// Cascades of each directional light's map (1: one map fitted to the visible receivers; 0: chosen from
+    /// the visible depth range, automaticCascadeCount).
+    int cascadeCount = 0;
     /// Weight of the logarithmic scheme in the cascades' practical split scheme (0: uniform splits).
-    float cascadeSplitWeight = 0.5f;
+    float cascadeSplitWeight = 0.9f;
     /// Fraction of each cascade's depth span, at its far end, blended into the next cascade.
     float cascadeBlend = 0.1f;
     /// Half-width of the moments' separable box blur, texels.
