@@ -120,3 +120,57 @@ TEST(ShimmerGLTest, SnappedCascadesDoNotShimmerAndUnsnappedOnesDo) {
     std::cout << "[ measured ] knob, 3 unsnapped cascades: shimmer " << unsnapped << "\n";
     EXPECT_GT(unsnapped, 0.0);
 }
+
+namespace {
+
+/// The room (two point lights) and the outdoor scene (a sun over 4 km: automatic cascades) under their own
+/// lights: the floor, or the measured worst with margin where a technique misses it there.
+Limit everyLightLimit(const std::string& scene, ShadowTechnique technique) {
+    static const std::map<std::pair<std::string, ShadowTechnique>, Limit> limits = {
+        {{"room", ShadowTechnique::Vsm}, {0.0005, 0.00066, 0.0059}},
+        {{"room", ShadowTechnique::Msm}, {0.0005, 0.00066, 0.0052}},
+        {{"room", ShadowTechnique::Evsm}, {0.00048, 0.00053, 0.0069}},
+        {{"outdoor", ShadowTechnique::SlopeScaledBias}, {0.006, 0.0005, 0.006}},
+        {{"outdoor", ShadowTechnique::PcfGsmQuadratic}, {0.00098, 0.0005, 0.005}},
+        {{"outdoor", ShadowTechnique::AdaptiveBias}, {0.00079, 0.0005, 0.005}},
+        {{"outdoor", ShadowTechnique::Vsm}, {0.0005, 0.00083, 0.005}},
+        {{"outdoor", ShadowTechnique::Msm}, {0.0005, 0.0011, 0.005}},
+        {{"outdoor", ShadowTechnique::Evsm}, {0.0005, 0.00083, 0.005}},
+    };
+    const auto found = limits.find({scene, technique});
+    return found == limits.end() ? Limit{} : found->second;
+}
+
+class EveryLightBenchGLTest : public testing::TestWithParam<const char*> {};
+
+} // namespace
+
+TEST_P(EveryLightBenchGLTest, EveryTechniqueAtItsDefaultsStaysUnderItsLimit) {
+    const engine::HeadlessContext& context = glTestContext();
+    BenchOptions options;
+    options.size = {320, 240};
+    options.timing = false;
+    const ShadowBench bench(context, options);
+    const std::string name = GetParam();
+    const auto scene = bench.prepare(name, std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".gltf"));
+    for (const ShadowTechnique technique : shadows::allTechniques()) {
+        if (shadows::traitsOf(technique).naive) {
+            continue;
+        }
+        shadows::ShadowSettings settings;
+        settings.technique = technique;
+        const ShadowMetrics m = bench.measure(*scene, settings).metrics;
+        const std::string view = name + " " + std::string(shadows::toString(technique));
+        std::cout << "[ measured ] " << view << ": acne " << m.acneRate << " of " << m.lit << ", leak "
+                  << m.leakRate << " of " << m.shadowed << ", darkening " << m.darkening << "\n";
+        const Limit limit = everyLightLimit(name, technique);
+        EXPECT_GT(m.lit, kMinimumPixels) << view;
+        EXPECT_GT(m.shadowed, kMinimumPixels) << view;
+        EXPECT_LE(m.acneRate, limit.acne) << view;
+        EXPECT_LE(m.leakRate, limit.leak) << view;
+        EXPECT_LE(m.darkening, limit.darkening) << view;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryLightBenchGLTest, testing::Values("room", "outdoor"),
+                         [](const auto& test) { return std::string(test.param); });
