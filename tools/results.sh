@@ -41,13 +41,18 @@ rm -rf "$work"
 #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
 bash tools/corpus.sh
 corpus=(suzanne human-subdivided fzk-haus at-at jeep duck wuson epileptic dwarf cylinder-engine terrain)
-peer() { # peer SCENE_FILE TECHNIQUE...: the peer's runs into $work/osg/<scene stem>/
-    local scene=$1 name
-    name=$(basename "${scene%.*}")
+peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<scene stem>/NAME
+    local scene=$1 name=$2 stem
+    stem=$(basename "${scene%.*}")
+    shift 2
+    xvfb-run -a -s "-screen 0 1280x1024x24" ./build/bin/gs-osgshadow --scene "$scene" "$@" \
+        --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$work/osg/$stem/$name"
+}
+peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults, named after it
+    local scene=$1 technique
     shift
     for technique in "$@"; do
-        xvfb-run -a -s "-screen 0 1280x1024x24" ./build/bin/gs-osgshadow --scene "$scene" --technique "$technique" \
-            --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$work/osg/$name/$technique"
+        peer_as "$scene" "$technique" --technique "$technique"
     done
 }
 for model in "${corpus[@]}"; do
@@ -89,6 +94,27 @@ views=(knob torus bowl thin-shell crease-cube grazing-plane spheres "${corpus[@]
 "$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") --out "$work/defaults-own"
 "$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") \
     --light-sweep 30,210:40,5,1 --out "$work/defaults-swept"
+
+# 8. Every light. The 4 km outdoor scene under its sun: the default technique with 1-4 cascades and several
+#    split weights, timed, against the truth, and its shimmer while the view the maps are fitted to moves by
+#    sub-texel steps, snapped and not; osgShadow's cascaded techniques on the same view in the same table. Then
+#    every technique at its defaults on the outdoor scene (automatic cascades) and in the point-light room.
+outdoor=content/scenes/outdoor.gltf
+peer_as "$outdoor" vdsm --technique vdsm
+peer_as "$outdoor" vdsm-csm2 --technique vdsm --cascades 2
+for splits in 1 2 3 4; do
+    peer_as "$outdoor" "pssm$splits" --technique pssm --splits "$splits"
+done
+cascades=(--config "c1:cascadeCount=1" --config "c1-unsnapped:cascadeCount=1,texelSnapping=false")
+for count in 2 3 4; do
+    for weight in 0.5 0.75 0.9 0.97; do
+        cascades+=(--config "c$count-w$weight:cascadeCount=$count,cascadeSplitWeight=$weight")
+    done
+done
+cascades+=(--config "c4-w0.9-unsnapped:cascadeCount=4,cascadeSplitWeight=0.9,texelSnapping=false")
+"$bench" --scene outdoor --techniques normal-offset --resolutions 2048 --frames 5 --shimmer 8 "${cascades[@]}" \
+    --peer "$work/osg" --out "$work/outdoor-cascades"
+"$bench" --defaults --scene outdoor --scene room --frames 5 --out "$work/every-light"
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results

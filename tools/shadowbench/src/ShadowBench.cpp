@@ -184,6 +184,7 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     engine::RenderTarget shaded(options_.size);
     engine.renderFrame(scene.scene_, scene.camera_, shaded);
     result.shadowBytes = module.stats().bytes;
+    result.shadowMaps = module.stats().shadowMaps;
     std::filesystem::path folder = options_.imageFolder / scene.name();
     result.shadedImage = folder / (config.label + ".png");
     result.shaded = shaded.readPixels();
@@ -391,6 +392,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["height"] = options.size.y;
     document["frames"] = options.frames;
     document["bandTexels"] = options.bandTexels;
+    document["shimmerFrames"] = options.shimmerFrames;
     document["groundTruth"] = options.softSamplesPerAxis > 0 ? "soft" : "hard";
     nlohmann::json list = nlohmann::json::array();
     for (const BenchResult& r : results) {
@@ -434,6 +436,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"shadowBytes", r.shadowBytes},
              {"fullKernelFraction", r.fullKernelFraction},
              {"shimmer", r.shimmer},
+             {"shadowMaps", r.shadowMaps},
              {"image", r.shadedImage.string()}});
     }
     document["results"] = list;

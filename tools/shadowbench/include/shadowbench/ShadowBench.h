@@ -48,6 +48,8 @@ struct BenchResult {
     /// as visibility 1.
     std::size_t peerUnlitReceivers = 0;
     std::size_t shadowBytes = 0;
+    /// Shadow maps drawn (cascades and cube faces count one each); 0 for peer rows.
+    int shadowMaps = 0;
     int bandPixels = 0;
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
     /// candidates); negative for every other configuration.
