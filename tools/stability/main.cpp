@@ -144,19 +144,27 @@ struct AccuracyCase {
     int resolution = 1024;
     float nearFarRatio = 1e3f;
     engine::LightType light = engine::LightType::Directional;
+    /// ShadowSettings::cascadeCount (directional lights); 1 is one fitted map.
+    int cascades = 1;
 };
 
 std::vector<AccuracyCase> accuracyCases(bool full) {
     using L = engine::LightType;
-    std::vector<AccuracyCase> list{{"reference: scale 1, map 1024, near/far 1e3"},
-                                   {"scene scale 0.001", 1e-3f},
-                                   {"scene scale 100000", 1e5f},
-                                   {"map 256", 1.0f, 256},
-                                   {"map 8192", 1.0f, 8192},
-                                   {"camera near/far 1e6", 1.0f, 1024, 1e6f},
-                                   {"spot reference: scale 1, map 1024", 1.0f, 1024, 1e3f, L::Spot},
-                                   {"spot, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Spot},
-                                   {"spot, scene scale 100000", 1e5f, 1024, 1e3f, L::Spot}};
+    std::vector<AccuracyCase> list{
+        {"reference: scale 1, map 1024, near/far 1e3"},
+        {"scene scale 0.001", 1e-3f},
+        {"scene scale 100000", 1e5f},
+        {"map 256", 1.0f, 256},
+        {"map 8192", 1.0f, 8192},
+        {"camera near/far 1e6", 1.0f, 1024, 1e6f},
+        {"spot reference: scale 1, map 1024", 1.0f, 1024, 1e3f, L::Spot},
+        {"spot, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Spot},
+        {"spot, scene scale 100000", 1e5f, 1024, 1e3f, L::Spot},
+        {"point reference: scale 1, map 1024", 1.0f, 1024, 1e3f, L::Point},
+        {"point, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Point},
+        {"point, scene scale 100000", 1e5f, 1024, 1e3f, L::Point},
+        {"4 cascades reference: scale 1, map 1024", 1.0f, 1024, 1e3f, L::Directional, 4},
+        {"4 cascades, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 4}};
     if (full) {
         list.push_back({"scene scale 1000", 1e3f});
         list.push_back({"map 2048", 1.0f, 2048});
@@ -164,12 +172,18 @@ std::vector<AccuracyCase> accuracyCases(bool full) {
         list.push_back({"spot, map 256", 1.0f, 256, 1e3f, L::Spot});
         list.push_back({"spot, map 8192", 1.0f, 8192, 1e3f, L::Spot});
         list.push_back({"spot, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Spot});
+        list.push_back({"point, map 256", 1.0f, 256, 1e3f, L::Point});
+        list.push_back({"point, map 8192", 1.0f, 8192, 1e3f, L::Point});
+        list.push_back({"point, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Point});
+        list.push_back({"4 cascades, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Directional, 4});
+        list.push_back({"4 cascades, map 256", 1.0f, 256, 1e3f, L::Directional, 4});
+        list.push_back({"4 cascades, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Directional, 4});
     }
     return list;
 }
 
-/// How much worse than the reference (same light type, scale 1, map 1024) a case may measure: the issue's
-/// floors as absolute margins.
+/// How much worse than the reference (same light type and cascades, scale 1, map 1024) a case may measure:
+/// the floors as absolute margins.
 constexpr double kAcneTolerance = 5e-4;
 constexpr double kLeakTolerance = 5e-4;
 constexpr double kDarkeningTolerance = 5e-3;
@@ -190,19 +204,22 @@ bool accuracySweep(bool full, const std::filesystem::path& imageFolder, std::ost
     options.size = {320, 240};
     options.timing = false;
     const shadowbench::ShadowBench bench(engine::TimingMethod::FinishAndSteadyClock, options);
-    std::map<engine::LightType, std::vector<shadowbench::ShadowMetrics>> references;
+    // One reference per light type and cascade count.
+    std::map<std::pair<engine::LightType, int>, std::vector<shadowbench::ShadowMetrics>> references;
     bool allOk = true;
     for (const AccuracyCase& c : accuracyCases(full)) {
         engine::Scene scene = boxScene(c.scale, 40.0f, c.nearFarRatio, false, c.light);
         const engine::EntityId camera = *scene.firstCamera();
         const shadowbench::BenchScene prepared(c.name, std::move(scene), camera, options);
-        const bool isReference = !references.contains(c.light);
-        std::vector<shadowbench::ShadowMetrics>& reference = references[c.light];
+        const std::pair kind(c.light, c.cascades);
+        const bool isReference = !references.contains(kind);
+        std::vector<shadowbench::ShadowMetrics>& reference = references[kind];
         table << "| " << c.name << " |";
         for (std::size_t t = 0; t < techniques.size(); ++t) {
             shadows::ShadowSettings settings;
             settings.technique = techniques[t];
             settings.resolution = c.resolution;
+            settings.cascadeCount = c.cascades;
             const shadowbench::Accuracy accuracy = bench.measure(prepared, settings);
             const shadowbench::ShadowMetrics& m = accuracy.metrics;
             if (isReference) {
