@@ -55,6 +55,34 @@ Limit limitOf(ShadowTechnique technique) {
 /// Rates over fewer pixels than this are not checked (a grazing view may see few shadowed receivers).
 constexpr std::size_t kMinimumPixels = 1000;
 
+/// Measures every non-naive technique at its defaults on `scene` and checks it against `limitOf(technique)`.
+/// Leak is checked only over enough shadowed pixels, unless `leakAlways`.
+template <typename LimitOf>
+void expectDefaultsWithinLimits(const ShadowBench& bench, const BenchScene& scene, const std::string& view,
+                                LimitOf limitOf, bool leakAlways) {
+    for (const ShadowTechnique technique : shadows::allTechniques()) {
+        if (shadows::traitsOf(technique).naive) {
+            continue;
+        }
+        shadows::ShadowSettings settings;
+        settings.technique = technique;
+        const ShadowMetrics m = bench.measure(scene, settings).metrics;
+        const std::string label = view + " " + std::string(shadows::toString(technique));
+        std::cout << "[ measured ] " << label << ": acne " << m.acneRate << " of " << m.lit << ", leak "
+                  << m.leakRate << " of " << m.shadowed << ", darkening " << m.darkening << "\n";
+        const Limit limit = limitOf(technique);
+        EXPECT_GT(m.lit, kMinimumPixels) << label;
+        EXPECT_LE(m.acneRate, limit.acne) << label;
+        EXPECT_LE(m.darkening, limit.darkening) << label;
+        if (leakAlways) {
+            EXPECT_GT(m.shadowed, kMinimumPixels) << label;
+        }
+        if (leakAlways || m.shadowed >= kMinimumPixels) {
+            EXPECT_LE(m.leakRate, limit.leak) << label;
+        }
+    }
+}
+
 class ShadowBenchGLTest : public testing::TestWithParam<const char*> {};
 
 } // namespace
@@ -72,25 +100,8 @@ TEST_P(ShadowBenchGLTest, EveryTechniqueAtItsDefaultsStaysUnderItsLimit) {
          {std::optional<engine::LightAngles>{},
           std::optional<engine::LightAngles>{engine::LightAngles{30.0f, 5.0f}}}) {
         const auto scene = bench.prepare(GetParam(), path, light);
-        for (const ShadowTechnique technique : shadows::allTechniques()) {
-            if (shadows::traitsOf(technique).naive) {
-                continue;
-            }
-            shadows::ShadowSettings settings;
-            settings.technique = technique;
-            const ShadowMetrics m = bench.measure(*scene, settings).metrics;
-            const std::string view = std::string(GetParam()) + (light ? " " + light->label() : "") + " " +
-                                     std::string(shadows::toString(technique));
-            std::cout << "[ measured ] " << view << ": acne " << m.acneRate << " of " << m.lit << ", leak "
-                      << m.leakRate << " of " << m.shadowed << ", darkening " << m.darkening << "\n";
-            const Limit limit = limitOf(technique);
-            EXPECT_GT(m.lit, kMinimumPixels) << view;
-            EXPECT_LE(m.acneRate, limit.acne) << view;
-            EXPECT_LE(m.darkening, limit.darkening) << view;
-            if (m.shadowed >= kMinimumPixels) {
-                EXPECT_LE(m.leakRate, limit.leak) << view;
-            }
-        }
+        expectDefaultsWithinLimits(
+            bench, *scene, std::string(GetParam()) + (light ? " " + light->label() : ""), limitOf, false);
     }
 }
 
@@ -153,23 +164,9 @@ TEST_P(EveryLightBenchGLTest, EveryTechniqueAtItsDefaultsStaysUnderItsLimit) {
     const ShadowBench bench(context, options);
     const std::string name = GetParam();
     const auto scene = bench.prepare(name, std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".gltf"));
-    for (const ShadowTechnique technique : shadows::allTechniques()) {
-        if (shadows::traitsOf(technique).naive) {
-            continue;
-        }
-        shadows::ShadowSettings settings;
-        settings.technique = technique;
-        const ShadowMetrics m = bench.measure(*scene, settings).metrics;
-        const std::string view = name + " " + std::string(shadows::toString(technique));
-        std::cout << "[ measured ] " << view << ": acne " << m.acneRate << " of " << m.lit << ", leak "
-                  << m.leakRate << " of " << m.shadowed << ", darkening " << m.darkening << "\n";
-        const Limit limit = everyLightLimit(name, technique);
-        EXPECT_GT(m.lit, kMinimumPixels) << view;
-        EXPECT_GT(m.shadowed, kMinimumPixels) << view;
-        EXPECT_LE(m.acneRate, limit.acne) << view;
-        EXPECT_LE(m.leakRate, limit.leak) << view;
-        EXPECT_LE(m.darkening, limit.darkening) << view;
-    }
+    expectDefaultsWithinLimits(
+        bench, *scene, name, [&](ShadowTechnique technique) { return everyLightLimit(name, technique); },
+        true);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryLightBenchGLTest, testing::Values("room", "outdoor"),

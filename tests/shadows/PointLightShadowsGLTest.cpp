@@ -19,14 +19,10 @@ namespace {
 
 const glm::vec3 kLamp(0.0f, 3.0f, 0.0f);
 
-struct Block {
-    glm::vec3 min;
-    glm::vec3 max;
-};
 // Boxes on the floor around the lamp: their shadows run out across the floor, over the edges where the floor
 // leaves the -Y face for the side faces (|x| or |z| = 3 there) and along the diagonals where two side faces
 // meet.
-const Block kBlocks[] = {
+const testsupport::Block kBlocks[] = {
     {{1.0f, 0.0f, -0.5f}, {1.8f, 1.2f, 0.5f}},    {{-2.2f, 0.0f, 1.6f}, {-1.2f, 0.8f, 2.6f}},
     {{1.3f, 0.0f, 1.3f}, {2.1f, 1.6f, 2.1f}},     {{-0.4f, 0.0f, -2.4f}, {0.4f, 2.0f, -1.6f}},
     {{-2.5f, 0.0f, -2.5f}, {-1.9f, 1.0f, -1.9f}}, {{3.5f, 0.0f, -4.0f}, {4.5f, 1.5f, -3.0f}}};
@@ -34,13 +30,7 @@ const Block kBlocks[] = {
 engine::Scene lampRoom(engine::EntityId& camera) {
     engine::Scene scene;
     testsupport::addGround(scene, 24.0f);
-    for (const Block& block : kBlocks) {
-        const auto entity = scene.create("block");
-        scene.entity(entity).mesh =
-            engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(1.0f))};
-        scene.entity(entity).transform.translation = 0.5f * (block.min + block.max);
-        scene.entity(entity).transform.scale = block.max - block.min;
-    }
+    testsupport::addBlocks(scene, kBlocks);
     const auto lamp = scene.create("lamp");
     engine::LightComponent light;
     light.type = engine::LightType::Point;
@@ -56,14 +46,7 @@ engine::Scene lampRoom(engine::EntityId& camera) {
 bool shadowedByBlocks(const glm::vec3& p) {
     const glm::vec3 offset = kLamp - p;
     const float distance = glm::length(offset);
-    for (const Block& block : kBlocks) {
-        const testsupport::BoxCrossing c =
-            testsupport::crossBox(p, offset / distance, block.min, block.max, 1e-4f);
-        if (c.enter < c.exit && c.enter < distance) {
-            return true;
-        }
-    }
-    return false;
+    return testsupport::blocksRay(kBlocks, p, offset / distance, distance);
 }
 
 /// Whether `p` lies within `texels` texels of an edge of the cube face it reads (its direction's two largest
@@ -91,28 +74,13 @@ PointErrors measureLampRoom(const ShadowMeasurement& m, int resolution) {
         // Three texels at the receiver's distance (a face's texel there is at most this large), away from
         // true edges in two directions across the light.
         const float band = 3.0f * texelScale * glm::length(kLamp - p) + 0.01f;
-        const glm::vec3 across1 = glm::normalize(glm::cross(toLight, glm::vec3(0.3f, 0.2f, 1.0f)));
-        const glm::vec3 across2 = glm::cross(toLight, across1);
-        const bool shadowed = shadowedByBlocks(p);
-        bool interior = true;
-        for (const glm::vec3 offset : {across1, -across1, across2, -across2}) {
-            interior = interior && shadowedByBlocks(p + band * offset) == shadowed;
-        }
-        if (!interior) {
+        if (!awayFromShadowEdges(p, toLight, band, shadowedByBlocks)) {
             continue;
         }
-        for (ShadowErrors* e : {&errors.all, nearSeam(p, 8.0f, resolution) ? &errors.seam : nullptr}) {
-            if (e == nullptr) {
-                continue;
-            }
-            if (shadowed) {
-                ++e->shadowedPixels;
-                e->leak += m.visibility[i] > 0.5f;
-            } else {
-                ++e->litPixels;
-                e->acne += m.visibility[i] < 0.5f;
-                e->darkeningSum += 1.0 - static_cast<double>(m.visibility[i]);
-            }
+        const bool shadowed = shadowedByBlocks(p);
+        errors.all.add(shadowed, m.visibility[i]);
+        if (nearSeam(p, 8.0f, resolution)) {
+            errors.seam.add(shadowed, m.visibility[i]);
         }
     }
     return errors;

@@ -49,30 +49,15 @@ bool boxOccludes(const glm::vec3& origin, const glm::vec3& toLight) {
 /// Classifies lit/shadowed receivers facing the light, away from shadow edges by `band` world units.
 ShadowErrors measureBoxScene(const ShadowMeasurement& m, float band) {
     const glm::vec3 toLight = -sunDirection();
-    // Two directions across the light, to probe the neighbourhood of each receiver for a nearby shadow edge.
-    const glm::vec3 across1 = glm::normalize(glm::cross(toLight, glm::vec3(0, 1, 0.3f)));
-    const glm::vec3 across2 = glm::cross(toLight, across1);
+    const auto occluded = [&](const glm::vec3& p) { return boxOccludes(p, toLight); };
     ShadowErrors errors;
     for (std::size_t i = 0; i < m.visibility.size(); ++i) {
         if (m.position[i].w < 0.5f || glm::dot(m.normal[i], toLight) < 0.1f) {
             continue; // background, or a surface not facing the light (unlit by shading anyway)
         }
         const glm::vec3 p(m.position[i]);
-        const bool shadowed = boxOccludes(p, toLight);
-        bool interior = true;
-        for (const glm::vec3 offset : {across1, -across1, across2, -across2}) {
-            interior = interior && boxOccludes(p + band * offset, toLight) == shadowed;
-        }
-        if (!interior) {
-            continue;
-        }
-        if (shadowed) {
-            ++errors.shadowedPixels;
-            errors.leak += m.visibility[i] > 0.5f;
-        } else {
-            ++errors.litPixels;
-            errors.acne += m.visibility[i] < 0.5f;
-            errors.darkeningSum += 1.0 - static_cast<double>(m.visibility[i]);
+        if (awayFromShadowEdges(p, toLight, band, occluded)) {
+            errors.add(occluded(p), m.visibility[i]);
         }
     }
     return errors;

@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <vector>
 
 struct ShadowMeasurement {
@@ -76,4 +77,33 @@ struct ShadowErrors {
     [[nodiscard]] double leakRate() const {
         return shadowedPixels ? static_cast<double>(leak) / static_cast<double>(shadowedPixels) : 0.0;
     }
+
+    /// Counts one receiver, truly `shadowed` or lit, rendered with `visibility`.
+    void add(bool shadowed, float visibility) {
+        if (shadowed) {
+            ++shadowedPixels;
+            leak += visibility > 0.5f;
+        } else {
+            ++litPixels;
+            acne += visibility < 0.5f;
+            darkeningSum += 1.0 - static_cast<double>(visibility);
+        }
+    }
 };
+
+/// Whether the truth `occluded(q)` at `p` agrees with the truth `band` away from it in four directions across
+/// `toLight`: `p` lies away from the true shadow edges, where acne and leak are scored.
+template <typename Occluded>
+bool awayFromShadowEdges(const glm::vec3& p, const glm::vec3& toLight, float band, Occluded occluded) {
+    const glm::vec3 tilted(0.0f, 1.0f, 0.3f);
+    const glm::vec3 helper = glm::length(glm::cross(toLight, tilted)) > 0.1f ? tilted : glm::vec3(1, 0, 0);
+    const glm::vec3 across1 = glm::normalize(glm::cross(toLight, helper));
+    const glm::vec3 across2 = glm::cross(toLight, across1);
+    const bool shadowed = occluded(p);
+    for (const glm::vec3& offset : {across1, -across1, across2, -across2}) {
+        if (occluded(p + band * offset) != shadowed) {
+            return false;
+        }
+    }
+    return true;
+}

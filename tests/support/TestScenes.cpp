@@ -44,4 +44,25 @@ BoxCrossing crossBox(const glm::vec3& origin, const glm::vec3& direction, const 
     return {enter, exit};
 }
 
+void addBlocks(engine::Scene& scene, std::span<const Block> blocks) {
+    const auto cube = std::make_shared<engine::MeshData>(engine::primitives::cube(1.0f));
+    for (const Block& block : blocks) {
+        const auto entity = scene.create("block");
+        scene.entity(entity).mesh = engine::MeshComponent{cube};
+        scene.entity(entity).transform.translation = 0.5f * (block.min + block.max);
+        scene.entity(entity).transform.scale = block.max - block.min;
+    }
+}
+
+bool blocksRay(std::span<const Block> blocks, const glm::vec3& origin, const glm::vec3& direction,
+               float length) {
+    for (const Block& block : blocks) {
+        const BoxCrossing crossing = crossBox(origin, direction, block.min, block.max, 1e-4f);
+        if (crossing.enter < crossing.exit && crossing.enter < length) {
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace testsupport
