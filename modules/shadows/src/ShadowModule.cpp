@@ -150,6 +150,8 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
     const FitView fit = fitView_.value_or(FitView{frame.view, frame.projection});
     const glm::mat4 fitViewProjection = fit.projection * fit.view;
     const int resolution = settings_.resolution;
+    // Where the receivers in view lie in depth: the cascades' range, and their automatic count.
+    const std::optional<glm::vec2> visibleRange = visibleDepthRange(fit, boxes);
 
     slots_.clear();
     std::vector<LightMapsBlock> lights(engine::ForwardRenderer::kMaxLights);
@@ -174,16 +176,17 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         };
         switch (light.light.type) {
         case engine::LightType::Directional: {
-            const std::optional<glm::vec2> range = visibleDepthRange(fit, boxes);
-            const int count = settings_.cascadeCount > 0 ? settings_.cascadeCount
-                                                         : automaticCascadeCount(range.value_or(glm::vec2(1.0f)));
-            if (count == 1 || !range) {
+            const int count = settings_.cascadeCount > 0
+                                  ? settings_.cascadeCount
+                                  : automaticCascadeCount(visibleRange.value_or(glm::vec2(1.0f)));
+            if (count == 1 || !visibleRange) {
                 maps.slots.x = add(fitDirectionalLight(light.direction, fitViewProjection, boxes, resolution,
                                                        settings_.texelSnapping));
                 maps.kind.x = kind(LightMapsKind::Single);
                 break;
             }
-            const std::vector<float> splits = cascadeSplits(range->x, range->y, count, settings_.cascadeSplitWeight);
+            const std::vector<float> splits =
+                cascadeSplits(visibleRange->x, visibleRange->y, count, settings_.cascadeSplitWeight);
             for (int cascade = 0; cascade < count; ++cascade) {
                 const auto c = static_cast<std::size_t>(cascade);
                 // A cascade also covers the previous one's blend band, which fades into it.
@@ -192,8 +195,8 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
                 maps.splitNear[cascade] = splits[c];
                 maps.splitFar[cascade] = splits[c + 1];
                 if (hasReceiversBetween(fit, boxes, sliceNear, splits[c + 1])) {
-                    maps.slots[cascade] = add(fitCascade(light.direction, fit, sliceNear, splits[c + 1], boxes,
-                                                         resolution, settings_.texelSnapping));
+                    maps.slots[cascade] = add(fitCascade(light.direction, fit, sliceNear, splits[c + 1],
+                                                         boxes, resolution, settings_.texelSnapping));
                 }
             }
             maps.kind = glm::ivec4(kind(LightMapsKind::Cascades), count, 0, 0);
