@@ -67,6 +67,8 @@ struct alignas(16) ShadowBlock {
     float depthBias;
     /// Fraction of a cascade's depth span blended into the next.
     float cascadeBlend;
+    /// The depth bias's arithmetic floor in an orthographic map's depth units (ShadowPlan::depthBiasFloor).
+    float depthBiasFloor;
 };
 
 static_assert(offsetof(ShadowBlock, texel) == 64 * kMaxMaps);
@@ -81,5 +83,6 @@ static_assert(offsetof(ShadowBlock, receiverPlaneClamp) == offsetof(ShadowBlock,
 static_assert(offsetof(ShadowBlock, tapDisplace) == offsetof(ShadowBlock, receiverPlaneClamp) + 16);
 static_assert(offsetof(ShadowBlock, depthBias) == offsetof(ShadowBlock, tapDisplace) + 4);
 static_assert(offsetof(ShadowBlock, cascadeBlend) == offsetof(ShadowBlock, depthBias) + 4);
+static_assert(offsetof(ShadowBlock, depthBiasFloor) == offsetof(ShadowBlock, cascadeBlend) + 4);
 
 } // namespace shadows

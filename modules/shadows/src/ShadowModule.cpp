@@ -385,6 +385,7 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
     block.fuzzyScale = settings_.fuzzyScale;
     block.normalOffset = plan_.normalOffsetTexels;
     block.depthBias = plan_.depthBias;
+    block.depthBiasFloor = plan_.depthBiasFloor;
     block.minimumVariance = settings_.vsmMinimumVariance;
     block.bleedingReduction = settings_.lightBleedingReduction;
     block.momentBias = settings_.msmMomentBias;

@@ -120,6 +120,7 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     }
     if (plan.traits->biasesDepth) {
         plan.depthBias = settings.depthBiasSteps * depthBiasStep(settings.depthFormat);
+        plan.depthBiasFloor = settings.depthBiasSteps * kArithmeticDepthStep;
     }
     plan.needsJitterTexture = plan.traits->jittered;
     // Two texels cover a bilinear footprint and central differences around any tap.

@@ -18,11 +18,9 @@ float depthStep(DepthFormat format) {
 }
 
 float depthBiasStep(DepthFormat format) {
-    // Receiver depths come from a float matrix product in the lighting pass, stored ones from the
-    // rasteriser's own interpolation: measured on the content scenes, they disagree by up to ~2^-18 of the
-    // depth range, more than a D24 or D32F step.
-    constexpr float kArithmeticStep = 1.0f / 262144.0f;
-    return std::max(depthStep(format), kArithmeticStep);
+    // A float depth in [0.5, 1) is rounded to 2^-24: a perspective map stores most depths there.
+    constexpr float kFloatStepBelowOne = 1.0f / 16777216.0f;
+    return std::max(depthStep(format), kFloatStepBelowOne);
 }
 
 std::vector<std::string> ShadowSettings::validate() const {

@@ -50,8 +50,11 @@ struct ShadowPlan {
     /// technique's footprint plus normalOffsetTexels; 0 for techniques without a footprint.
     float normalOffsetTexels = 0.0f;
     /// Depth units the comparison depth is lowered by (depthBiasSteps format steps; 0 unless the technique
-    /// biasesDepth).
+    /// biasesDepth), but no less than depthBiasFloor.
     float depthBias = 0.0f;
+    /// depthBiasSteps arithmetic steps (kArithmeticDepthStep): depth units of an orthographic map; the
+    /// lighting pass converts them for a perspective map at the receiver's distance.
+    float depthBiasFloor = 0.0f;
     /// How far from the lookup, in texels, the technique reads the map (taps, jitter, blur, bilinear and
     /// central-difference neighbours): cube faces are widened by this much so kernels near a face's edge read
     /// the same face.

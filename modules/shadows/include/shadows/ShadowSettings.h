@@ -171,8 +171,13 @@ std::optional<ShadowDebugView> debugViewFromString(std::string_view name);
 
 /// @brief Depth step of a format: 1/65535 (D16), 1/16777215 (D24), 0 for D32F (float, no fixed step).
 float depthStep(DepthFormat format);
-/// @brief The step depthBiasSteps counts: the format's step, but no finer than 2^-18, how far the float
-/// arithmetic of the two depth paths (shadow pass, lighting pass) was measured to disagree.
+/// @brief The step depthBiasSteps counts in the stored depth: the format's step; for D32F the spacing of
+/// floats just below 1 (2^-24), where a perspective map's depths crowd.
 float depthBiasStep(DepthFormat format);
+/// @brief How far the float arithmetic of the two depth paths (shadow pass, lighting pass) was measured to
+/// disagree, as a fraction of an orthographic map's depth range (2^-18): a distance along the light's axis,
+/// so depthBiasSteps of it bound the bias from below in every map only after conversion by the map's
+/// projection (receiver.glsl).
+inline constexpr float kArithmeticDepthStep = 1.0f / 262144.0f;
 
 } // namespace shadows

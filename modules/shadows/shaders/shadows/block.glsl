@@ -41,5 +41,6 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     float gsTapDisplace;                        // circular-8 d, texels
     float gsShadowDepthBias;                    // depth units the comparison depth is lowered by
     float gsShadowCascadeBlend;                 // fraction of a cascade's span blended into the next
+    float gsShadowDepthBiasFloor;               // the depth bias's arithmetic floor, orthographic depth units
 };
 

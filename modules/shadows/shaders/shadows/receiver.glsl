@@ -149,7 +149,16 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     vec3 coord = clip.xyz / clip.w;
     lookup.coord = coord.xy;
     lookup.texel = coord.xy * gsShadowTexel[slot].x;
-    lookup.depth = coord.z - gsShadowDepthBias;
+    // The depth bias: format steps of the stored depth, but no less than the arithmetic floor, which is a
+    // distance along the light's axis (a fraction of the map's depth range). A perspective map's depth changes
+    // by near·far/w² per unit of that range at distance w: as a fixed depth offset the floor would span a
+    // growing distance, w²/near, and at far/near 1000 it reached 0.27 m at a room's wall, past thin casters
+    // standing near it (every technique leaked there).
+    float biasFloor = gsShadowDepthBiasFloor;
+    if (perspective) {
+        biasFloor *= gsShadowDepthRange[slot].x * gsShadowDepthRange[slot].y / (clip.w * clip.w);
+    }
+    lookup.depth = coord.z - max(gsShadowDepthBias, biasFloor);
     if (lookup.depth >= 1.0) {
         return 1.0; // beyond the map's depth range: nothing can occlude
     }
