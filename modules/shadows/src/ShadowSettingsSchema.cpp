@@ -202,10 +202,14 @@ const std::vector<SettingRow>& rows() {
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},
         {"cascadeCount", "", "cascades",
-         "Cascades of each directional light's shadow map. 1: one map fitted to the receivers in view. 2-4: the "
-         "view's depth range of visible receivers is split by the practical split scheme, each slice gets a map "
-         "around its bounding sphere, snapped to texels; a cascade no visible receiver falls in is not drawn. "
-         "0: automatic: one map below a depth range of 1000:1, one more cascade per decade beyond, so a model "
+         "Cascades of each directional light's shadow map. 1: one map fitted to the receivers in view. 2-4: "
+         "the "
+         "view's depth range of visible receivers is split by the practical split scheme, each slice gets a "
+         "map "
+         "around its bounding sphere, snapped to texels; a cascade no visible receiver falls in is not "
+         "drawn. "
+         "0: automatic: one map below a depth range of 1000:1, one more cascade per decade beyond, so a "
+         "model "
          "keeps its one tight map and a landscape seen from the ground gets cascades.",
          IntSetting{&S::cascadeCount,
                     [](const S&) { return fixed({.min = 1, .max = kMaxCascades, .zeroAllowed = true}); }},

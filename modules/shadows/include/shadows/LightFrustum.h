@@ -74,10 +74,10 @@ std::vector<float> cascadeSplits(float near, float far, int count, float weight)
 /// while the camera moves). nullopt when no box is in view.
 std::optional<glm::vec2> visibleDepthRange(const FitView& view, std::span<const Aabb> boxes);
 
-/// @brief Cascades for visible receivers spanning view depths `depthRange`: one map below 1000:1, then one more
-/// per decade (2 below 10⁴:1, 3 below 10⁵:1, else kMaxCascades). Models on a ground plane (up to some hundreds
-/// to one) meet the accuracy floor with one map fitted to the receivers, at a third of the shadow pass that
-/// cascades cost; a landscape seen from the ground does not (docs/RESULTS.md, "Every light").
+/// @brief Cascades for visible receivers spanning view depths `depthRange`: one map below 1000:1, then one
+/// more per decade (2 below 10⁴:1, 3 below 10⁵:1, else kMaxCascades). Models on a ground plane (up to some
+/// hundreds to one) meet the accuracy floor with one map fitted to the receivers, at a third of the shadow
+/// pass that cascades cost; a landscape seen from the ground does not (docs/RESULTS.md, "Every light").
 int automaticCascadeCount(glm::vec2 depthRange);
 
 /// @brief Whether a box that intersects the view volume of `view` reaches view depths between `near` and
