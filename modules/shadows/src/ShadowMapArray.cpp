@@ -1,5 +1,9 @@
 #include "ShadowMapArray.h"
 
+#include <engine/Error.h>
+
+#include <string>
+
 namespace shadows {
 
 namespace {
@@ -38,7 +42,17 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
         } else {
             framebuffer.setDrawBuffers({});
         }
-        framebuffer.check();
+        try {
+            framebuffer.check();
+        } catch (const engine::GlError& error) {
+            // Drivers report a layer they could not allocate as an incomplete attachment: say what was asked.
+            throw engine::GlError(
+                "shadow maps: " + std::to_string(layers) + " layers of " + std::to_string(resolution) +
+                "² (" + std::to_string(bytes(plan) >> 20) +
+                " MiB) could not be drawn into; lower ShadowSettings::resolution or the maps in "
+                "use (" +
+                error.what() + ")");
+        }
     }
 }
 
