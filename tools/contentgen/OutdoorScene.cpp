@@ -51,6 +51,15 @@ float uniform(Outdoor& o, float low, float high) {
     return low + (high - low) * static_cast<float>(o.random() >> 8) / 16777216.0f;
 }
 
+/// Anywhere on the ground (x, z). Every draw is a statement of its own: the arguments of one call are
+/// evaluated in an unspecified order (GCC's differs between optimisation levels), so the committed scene
+/// would depend on the build. The draws keep the order the committed scene was made in: z, then x.
+glm::vec2 anywhere(Outdoor& o) {
+    const float z = uniform(o, -1900.0f, 1900.0f);
+    const float x = uniform(o, -1900.0f, 1900.0f);
+    return {x, z};
+}
+
 template <typename T, std::size_t N>
 const T& pick(Outdoor& o, const std::array<T, N>& items) {
     return items[static_cast<std::size_t>(uniform(o, 0.0f, static_cast<float>(N))) % N];
@@ -134,6 +143,24 @@ void building(Outdoor& o, float x, float z, glm::vec3 size, float yawDegrees, bo
         upright(o, "roof", o.b.shape("roof", pick(o, kRoofs), pyramid), group, size.y + sink,
                 {size.x * 1.08f, roof, size.z * 1.08f});
     }
+}
+
+/// A building of random size (within [low, high]) and yaw (0-90°) at `p`: yaw drawn first, then the size,
+/// as for the committed scene (see anywhere).
+void randomBuilding(Outdoor& o, glm::vec2 p, glm::vec3 low, glm::vec3 high, bool flat) {
+    const float yaw = uniform(o, 0.0f, 90.0f);
+    const float width = uniform(o, low.x, high.x);
+    const float height = uniform(o, low.y, high.y);
+    const float depth = uniform(o, low.z, high.z);
+    building(o, p.x, p.y, {width, height, depth}, yaw, flat);
+}
+
+/// A tree of random height in [low, high) at `p`, a conifer with probability `conifers`: the kind drawn
+/// first, then the height, as for the committed scene (see anywhere).
+void randomTree(Outdoor& o, glm::vec2 p, float low, float high, float conifers) {
+    const bool conifer = uniform(o, 0.0f, 1.0f) < conifers;
+    const float height = uniform(o, low, high);
+    tree(o, p.x, p.y, height, conifer);
 }
 
 /// A random point in the disc of `radius` around `centre` (x, z).
@@ -241,8 +268,7 @@ void buildOutdoor(SceneBuilder& b) {
             return inDisc(o, {260.0f, -450.0f}, 190.0f);
         },
         [&](glm::vec2 p) {
-            building(o, p.x, p.y, {uniform(o, 6.0f, 12.0f), uniform(o, 4.0f, 9.0f), uniform(o, 6.0f, 11.0f)},
-                     uniform(o, 0.0f, 90.0f), false);
+            randomBuilding(o, p, {6.0f, 4.0f, 6.0f}, {12.0f, 9.0f, 11.0f}, false);
         });
     // Towers of 20 to 40 m: a town centre 1.5 km away and two on their own.
     scatter(
@@ -251,9 +277,7 @@ void buildOutdoor(SceneBuilder& b) {
             return inDisc(o, {-650.0f, -1500.0f}, 160.0f);
         },
         [&](glm::vec2 p) {
-            building(o, p.x, p.y,
-                     {uniform(o, 14.0f, 26.0f), uniform(o, 20.0f, 40.0f), uniform(o, 14.0f, 26.0f)},
-                     uniform(o, 0.0f, 90.0f), true);
+            randomBuilding(o, p, {14.0f, 20.0f, 14.0f}, {26.0f, 40.0f, 26.0f}, true);
         });
     for (const glm::vec2 p : {glm::vec2(1100.0f, -1300.0f), glm::vec2(-1400.0f, 900.0f)}) {
         o.taken.emplace_back(p.x, p.y, 16.0f);
@@ -261,22 +285,19 @@ void buildOutdoor(SceneBuilder& b) {
     }
     // Farms anywhere.
     scatter(
-        o, 25, 12.0f, [&] { return glm::vec2(uniform(o, -1900.0f, 1900.0f), uniform(o, -1900.0f, 1900.0f)); },
+        o, 25, 12.0f, [&] { return anywhere(o); },
         [&](glm::vec2 p) {
-            building(o, p.x, p.y,
-                     {uniform(o, 10.0f, 24.0f), uniform(o, 5.0f, 10.0f), uniform(o, 8.0f, 14.0f)},
-                     uniform(o, 0.0f, 90.0f), false);
+            randomBuilding(o, p, {10.0f, 5.0f, 8.0f}, {24.0f, 10.0f, 14.0f}, false);
         });
     // Three woods and trees scattered over everything.
     for (const glm::vec2 wood :
          {glm::vec2(-350.0f, -250.0f), glm::vec2(520.0f, -850.0f), glm::vec2(-1200.0f, -600.0f)}) {
         scatter(
             o, 45, 4.0f, [&] { return inDisc(o, wood, 130.0f); },
-            [&](glm::vec2 p) { tree(o, p.x, p.y, uniform(o, 8.0f, 20.0f), uniform(o, 0.0f, 1.0f) < 0.4f); });
+            [&](glm::vec2 p) { randomTree(o, p, 8.0f, 20.0f, 0.4f); });
     }
     scatter(
-        o, 90, 4.0f, [&] { return glm::vec2(uniform(o, -1900.0f, 1900.0f), uniform(o, -1900.0f, 1900.0f)); },
-        [&](glm::vec2 p) { tree(o, p.x, p.y, uniform(o, 4.0f, 18.0f), uniform(o, 0.0f, 1.0f) < 0.3f); });
+        o, 90, 4.0f, [&] { return anywhere(o); }, [&](glm::vec2 p) { randomTree(o, p, 4.0f, 18.0f, 0.3f); });
     // A power line across the whole ground: 12 m poles every 75 m.
     const glm::vec2 lineStart(-1900.0f, -350.0f);
     const glm::vec2 lineEnd(1900.0f, -700.0f);
