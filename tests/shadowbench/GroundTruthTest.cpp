@@ -70,15 +70,24 @@ TEST(GroundTruthTest, BoxOnPlaneMatchesTheClosedFormShadow) {
     EXPECT_GT(shadowed, 500u);
 }
 
-TEST(GroundTruthTest, SphereOverPlaneMatchesTheClosedFormShadow) {
+namespace {
+
+/// A finely tessellated unit sphere centred at `centre` over a 20 x 20 ground.
+engine::Scene ballOverGround(const glm::vec3& centre) {
     engine::Scene scene;
     testsupport::addGround(scene, 20.0f);
     const auto ball = scene.create("ball");
     scene.entity(ball).mesh =
         engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::sphere(1.0f, 96, 192))};
-    const glm::vec3 centre(0.5f, 2.0f, -0.5f);
     scene.entity(ball).transform.translation = centre;
-    const RayTracedVisibility tracer(scene);
+    return scene;
+}
+
+} // namespace
+
+TEST(GroundTruthTest, SphereOverPlaneMatchesTheClosedFormShadow) {
+    const glm::vec3 centre(0.5f, 2.0f, -0.5f);
+    const RayTracedVisibility tracer(ballOverGround(centre));
     const engine::FrameLight light = sun({0.3f, -1.0f, 0.2f});
     const GroundSamples s = groundGrid(4.0f, 100);
     std::vector<float> visibility(s.positions.size());
@@ -101,14 +110,8 @@ TEST(GroundTruthTest, SphereOverPlaneMatchesTheClosedFormShadow) {
 }
 
 TEST(GroundTruthTest, PointLightAboveASphereCastsTheClosedFormMagnifiedShadow) {
-    engine::Scene scene;
-    testsupport::addGround(scene, 20.0f);
-    const auto ball = scene.create("ball");
-    scene.entity(ball).mesh =
-        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::sphere(1.0f, 96, 192))};
     const glm::vec3 centre(0.5f, 2.0f, -0.5f);
-    scene.entity(ball).transform.translation = centre;
-    const RayTracedVisibility tracer(scene);
+    const RayTracedVisibility tracer(ballOverGround(centre));
     engine::FrameLight bulb;
     bulb.light.type = engine::LightType::Point;
     bulb.position = centre + glm::vec3(0.0f, 3.0f, 0.0f); // 5 above the ground, straight over the ball
