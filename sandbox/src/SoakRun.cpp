@@ -35,10 +35,11 @@ std::string fixed(double value, int decimals) {
 
 } // namespace
 
-SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErrors, double rssToleranceMiB) {
+SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErrors, double rssTolerance) {
     SoakVerdict verdict;
     verdict.glErrors = glErrors;
     const SoakSample& baseline = samples.front();
+    verdict.rssToleranceMiB = rssTolerance * baseline.rssMiB;
     for (const SoakSample& sample : samples) {
         verdict.rssGrowthMiB = std::max(verdict.rssGrowthMiB, sample.rssMiB - baseline.rssMiB);
         const long growth = sample.glObjects.total() - baseline.glObjects.total();
@@ -46,9 +47,10 @@ SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErro
             verdict.glObjectGrowth = growth;
         }
     }
-    if (verdict.rssGrowthMiB > rssToleranceMiB) {
+    if (verdict.rssGrowthMiB > verdict.rssToleranceMiB) {
         verdict.failures.push_back("RSS grew " + fixed(verdict.rssGrowthMiB, 1) +
-                                   " MiB after warm-up (tolerance " + fixed(rssToleranceMiB, 1) + " MiB)");
+                                   " MiB after warm-up (tolerance " + fixed(verdict.rssToleranceMiB, 1) +
+                                   " MiB)");
     }
     for (const SoakSample& sample : samples) {
         if (sample.glObjects != baseline.glObjects) {
@@ -131,9 +133,9 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
             samples.push_back(sample);
         }
     }
-    const SoakVerdict verdict = judgeSoak(samples, glErrors, kSoakRssToleranceMiB);
+    const SoakVerdict verdict = judgeSoak(samples, glErrors, kSoakRssTolerance);
     out << "soak: " << frames << " frames; after warm-up the trimmed RSS grew "
-        << fixed(verdict.rssGrowthMiB, 1) << " MiB (tolerance " << fixed(kSoakRssToleranceMiB, 1)
+        << fixed(verdict.rssGrowthMiB, 1) << " MiB (tolerance " << fixed(verdict.rssToleranceMiB, 1)
         << " MiB), live GL objects changed by " << verdict.glObjectGrowth << " (tolerance 0), GL errors "
         << glErrors << ": " << (verdict.passed() ? "PASSED" : "FAILED") << std::endl;
     for (const std::string& failure : verdict.failures) {

@@ -25,11 +25,14 @@ inline constexpr int kSoakWarmUpCycles = 2;
 /// @brief Not judged under AddressSanitizer: freed blocks wait in its quarantine (256 MiB by default) before
 /// they are reused, so RSS moves by the size of what was freed last (shadow map arrays are 16-192 MiB) and
 /// says nothing about leaks; LeakSanitizer checks those at exit.
-inline constexpr double kSoakRssToleranceMiB = std::numeric_limits<double>::infinity();
+inline constexpr double kSoakRssTolerance = std::numeric_limits<double>::infinity();
 #else
-/// @brief Growth of the trimmed RSS after warm-up that still counts as flat, MiB: the allocator's and the
-/// driver's caches move by a few MiB from one cycle to the next (docs/ROBUSTNESS.md has the measured spread).
-inline constexpr double kSoakRssToleranceMiB = 8.0;
+/// @brief Growth of the trimmed RSS after warm-up that still counts as flat, as a fraction of the baseline
+/// sample. The driver keeps caches whose size at a cycle's end depends on where in their own cycle it stops:
+/// on llvmpipe one scene's heap toggles between two states 4 MiB apart, and over the content scenes the
+/// trimmed RSS spread 6.6 % of itself on the 2-core machine and 5.4 % in a CI run (docs/ROBUSTNESS.md). The
+/// allowance does not grow with the run, so a longer soak catches a smaller leak per frame.
+inline constexpr double kSoakRssTolerance = 0.10;
 #endif
 
 /// @brief What the soak run measured at the end of one cycle (every scene × technique × light type once).
@@ -47,10 +50,11 @@ struct SoakSample {
 };
 
 /// @brief Whether the samples are flat after warm-up, the first sample (the last warm-up cycle's) being the
-/// baseline: trimmed RSS at most `rssToleranceMiB` above it, the live GL objects equal to it kind by kind, no
-/// GL error.
+/// baseline: trimmed RSS at most `rssTolerance` × the baseline's above it, the live GL objects equal to it
+/// kind by kind, no GL error.
 struct SoakVerdict {
     double rssGrowthMiB = 0.0;
+    double rssToleranceMiB = 0.0;
     long glObjectGrowth = 0;
     std::size_t glErrors = 0;
     /// One line per violated bound; empty when the run passed.
@@ -60,7 +64,7 @@ struct SoakVerdict {
 };
 
 /// @brief Judges `samples` (at least one) of a soak with `glErrors` GL errors seen.
-SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErrors, double rssToleranceMiB);
+SoakVerdict judgeSoak(const std::vector<SoakSample>& samples, std::size_t glErrors, double rssTolerance);
 
 /// @brief Resident set size of this process, MiB (/proc/self/statm).
 double residentMiB();
