@@ -115,7 +115,9 @@ TEST(ChunkedRenderingGLTest, CasterOutsideTheViewStillShadowsVisibleGround) {
         lighter += delta < -kMaxChannelDifference;
     }
     EXPECT_GT(darker, 200);
-    EXPECT_EQ(lighter, 0);
+    // The map covers where shadows can fall, so without the caster it shrinks to the sphere's footprint and
+    // the sphere's shadow edge lands on a finer texel grid: a pixel or two of it may come out lighter.
+    EXPECT_LE(lighter, 3);
     EXPECT_EQ(withCaster.stats.drawCalls, without.stats.drawCalls); // it was culled from the lighting pass
 }
 

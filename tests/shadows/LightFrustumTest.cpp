@@ -66,6 +66,68 @@ TEST(LightFrustumTest, DirectionalMapIsClippedToTheCameraView) {
     EXPECT_LT(p.texelScale * 1024.0f, 60.0f);
 }
 
+TEST(LightFrustumTest, DirectionalMapCoversWhereShadowsCanFallNotTheWholeGroundInView) {
+    // A model on a large ground plane (flat: it cannot shadow itself): the map covers the model's light-space
+    // footprint, where its shadow and its self-shadowing fall, not the 40 m of ground in view.
+    const std::vector<Aabb> boxes = {box({-20, 0, -20}, {20, 0, 20}),
+                                     box({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f})};
+    const glm::mat4 camera = cameraLookingAt({0, 6, 12}, {0, 0, 0});
+    const LightProjection p = fitDirectionalLight(kSun, camera, boxes, 1024, true);
+    ASSERT_TRUE(p.valid);
+    const Aabb footprint = boxes[1].transformed(p.view);
+    const float footprintExtent =
+        std::max(footprint.max.x - footprint.min.x, footprint.max.y - footprint.min.y);
+    EXPECT_LE(p.texelScale * 1024.0f, footprintExtent * 1.2f); // 1/8-octave quantisation at most
+    // The model and its shadow on the ground (its corners carried along the light onto y = 0) are mapped.
+    for (const glm::vec3& corner : boxes[1].corners()) {
+        const glm::vec3 onGround = corner + kSun * (-corner.y / kSun.y);
+        for (const glm::vec3& point : {corner, onGround}) {
+            const glm::vec3 s = toShadow(p, point);
+            EXPECT_TRUE(s.x >= 0.0f && s.x <= 1.0f && s.y >= 0.0f && s.y <= 1.0f) << s.x << " " << s.y;
+        }
+    }
+}
+
+TEST(LightFrustumTest, DirectionalMapDepthSpansOnlyWhatLiesOverTheMap) {
+    // An 800 m ground spans hundreds of metres of light-space depth under a low sun; over the model's
+    // footprint it spans a few. Filtered moments need that short range to tell a small caster from the
+    // ground.
+    const glm::vec3 lowSun = glm::normalize(glm::vec3(-0.4f, -0.35f, -0.3f));
+    const std::vector<Aabb> boxes = {box({-400, 0, -400}, {400, 0, 400}), box({-1, 0, -1}, {1, 2, 1})};
+    const LightProjection p =
+        fitDirectionalLight(lowSun, cameraLookingAt({0, 3, 8}, {0, 0, 0}, 1000.0f), boxes, 1024, true);
+    ASSERT_TRUE(p.valid);
+    const float depthRange = 2.0f / std::abs(p.projection[2][2]);
+    const Aabb groundInLight = boxes[0].transformed(p.view);
+    EXPECT_GT(groundInLight.max.z - groundInLight.min.z, 500.0f);
+    EXPECT_LT(depthRange, 20.0f);
+    // Still, everything over the map lies within its depth range.
+    for (int i = -40; i <= 40; ++i) {
+        for (int k = -40; k <= 40; ++k) {
+            for (const float y : {0.0f, 1.0f, 2.0f}) {
+                const glm::vec3 point(0.1f * static_cast<float>(i), y, 0.1f * static_cast<float>(k));
+                const bool onSomething =
+                    y == 0.0f || (std::abs(point.x) <= 1.0f && std::abs(point.z) <= 1.0f);
+                const glm::vec3 s = toShadow(p, point);
+                if (onSomething && s.x >= 0.0f && s.x <= 1.0f && s.y >= 0.0f && s.y <= 1.0f) {
+                    EXPECT_TRUE(s.z >= 0.0f && s.z <= 1.0f) << point.x << " " << point.y << " " << point.z;
+                }
+            }
+        }
+    }
+}
+
+TEST(LightFrustumTest, AGroundNothingCanShadowNeedsNoMap) {
+    // A flat ground alone cannot be shadowed.
+    const Aabb ground = box({-20, 0, -20}, {20, 0, 20});
+    const glm::mat4 camera = cameraLookingAt({0, 6, 12}, {0, 0, 0});
+    EXPECT_FALSE(fitDirectionalLight(kSun, camera, std::vector<Aabb>{ground}, 1024, true).valid);
+    // A ground with relief (not flat) can shadow itself.
+    EXPECT_TRUE(
+        fitDirectionalLight(kSun, camera, std::vector<Aabb>{box({-20, 0, -20}, {20, 0.5f, 20})}, 1024, true)
+            .valid);
+}
+
 TEST(LightFrustumTest, NothingVisibleMeansNoMap) {
     const std::vector<Aabb> boxes = {box({100, 0, 100}, {101, 1, 101})};
     EXPECT_FALSE(
@@ -241,8 +303,22 @@ TEST(CascadeFitTest, CastersTowardsTheLightAreInsideTheDepthRange) {
     const std::vector<Aabb> boxes = {kOutdoor[0], box({25, 0, -10}, {30, 200, -5})};
     const LightProjection p = fitCascade(kLowSun, view, 0.3f, 20.0f, boxes, 1024, true);
     ASSERT_TRUE(p.valid);
-    const glm::vec3 top = toShadow(p, {27, 200, -7});
-    EXPECT_GE(top.z, 0.0f);
+    // Every point of the tower over the map lies within its depth range (the part beside it need not).
+    int overTheMap = 0;
+    for (int i = 0; i <= 10; ++i) {
+        for (int j = 0; j <= 100; ++j) {
+            for (int k = 0; k <= 10; ++k) {
+                const glm::vec3 point(25.0f + 0.5f * static_cast<float>(i), 2.0f * static_cast<float>(j),
+                                      -10.0f + 0.5f * static_cast<float>(k));
+                const glm::vec3 s = toShadow(p, point);
+                if (s.x >= 0.0f && s.x <= 1.0f && s.y >= 0.0f && s.y <= 1.0f) {
+                    ++overTheMap;
+                    EXPECT_GE(s.z, 0.0f) << point.x << " " << point.y << " " << point.z;
+                }
+            }
+        }
+    }
+    EXPECT_GT(overTheMap, 0);
 }
 
 TEST(CascadeFitTest, ReceiversDecideWhichSlicesAreDrawn) {

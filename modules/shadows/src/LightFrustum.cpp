@@ -133,6 +133,68 @@ Aabb visiblePart(const Aabb& box, const glm::mat4& viewProjection) {
     return part;
 }
 
+/// A flat box (thickness below 1e-5 of its size along one axis) holds coplanar surfaces, which cannot shadow
+/// one another.
+bool isPlanar(const Aabb& box) {
+    const glm::vec3 size = box.max - box.min;
+    const float largest = std::max({size.x, size.y, size.z});
+    return std::min({size.x, size.y, size.z}) <= 1e-5f * largest;
+}
+
+/// Clips a convex polygon to the half-space where `sign` · (point[axis] - bound) ≥ 0 (Sutherland-Hodgman).
+std::vector<glm::vec3> clipPolygon(const std::vector<glm::vec3>& polygon, int axis, float bound, float sign) {
+    std::vector<glm::vec3> kept;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const glm::vec3& a = polygon[i];
+        const glm::vec3& b = polygon[(i + 1) % polygon.size()];
+        const float da = sign * (a[axis] - bound);
+        const float db = sign * (b[axis] - bound);
+        if (da >= 0.0f) {
+            kept.push_back(a);
+        }
+        if ((da >= 0.0f) != (db >= 0.0f)) {
+            kept.push_back(a + (b - a) * (da / (da - db)));
+        }
+    }
+    return kept;
+}
+
+/// The light-space depths (min, max z) of the part of world box `box` over the rectangle [low, high] of light
+/// space (`view` a rotation), or nothing when none of it lies over the rectangle. A vertex of that part lies
+/// on a face of the box inside the rectangle's prism, so clipping the six faces finds every extreme.
+std::optional<glm::vec2> depthSpanOver(const Aabb& box, const glm::mat4& view, glm::vec2 low,
+                                       glm::vec2 high) {
+    if (box.empty()) {
+        return std::nullopt;
+    }
+    const auto corner = [&](int bits) {
+        const glm::vec3 world((bits & 1) != 0 ? box.max.x : box.min.x,
+                              (bits & 2) != 0 ? box.max.y : box.min.y,
+                              (bits & 4) != 0 ? box.max.z : box.min.z);
+        return glm::vec3(view * glm::vec4(world, 1.0f));
+    };
+    glm::vec2 span(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max());
+    for (int axis = 0; axis < 3; ++axis) {
+        const int u = 1 << ((axis + 1) % 3);
+        const int v = 1 << ((axis + 2) % 3);
+        for (const int side : {0, 1 << axis}) {
+            std::vector<glm::vec3> face = {corner(side), corner(side | u), corner(side | u | v),
+                                           corner(side | v)};
+            face = clipPolygon(face, 0, low.x, 1.0f);
+            face = clipPolygon(face, 0, high.x, -1.0f);
+            face = clipPolygon(face, 1, low.y, 1.0f);
+            face = clipPolygon(face, 1, high.y, -1.0f);
+            for (const glm::vec3& point : face) {
+                span = glm::vec2(std::min(span.x, point.z), std::max(span.y, point.z));
+            }
+        }
+    }
+    if (span.x > span.y) {
+        return std::nullopt;
+    }
+    return span;
+}
+
 /// The corners of a projection's view volume in view space, and its near and far view depths.
 struct FrustumCorners {
     std::array<glm::vec3, 4> nearPoints{};
@@ -176,37 +238,50 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
             }
         }
     }
-    Aabb receivers;
+    // The map covers where a visible receiver can be shadowed: the part of each receiver in view (clipped to
+    // the camera frustum's light-space extent) under some caster that reaches nearer the light than the
+    // receiver's far side (the light looks down -z). A directional light's shadow falls within its caster's
+    // light-space extent, so a model on a large ground plane gets the texels of its own footprint, not of the
+    // ground in view, and receivers outside the map are lit (the lighting pass reads nothing there).
+    std::vector<Aabb> lightBoxes;
+    lightBoxes.reserve(boxes.size());
     for (const Aabb& box : boxes) {
-        if (!box.empty() && engine::intersectsClipVolume(box, cameraViewProjection)) {
-            const Aabb light = box.transformed(result.view);
-            receivers.extend(light.min);
-            receivers.extend(light.max);
-        }
+        lightBoxes.push_back(box.empty() ? Aabb{} : box.transformed(result.view));
     }
-    if (receivers.empty()) {
-        return result;
-    }
-    glm::vec2 low = glm::max(glm::vec2(receivers.min), glm::vec2(frustum.min));
-    glm::vec2 high = glm::min(glm::vec2(receivers.max), glm::vec2(frustum.max));
-    if (low.x >= high.x || low.y >= high.y) {
-        return result;
-    }
-    // Depth: everything overlapping the covered region, towards the light and beyond the receivers.
-    float nearest = -std::numeric_limits<float>::max();
-    float farthest = std::numeric_limits<float>::max();
-    for (const Aabb& box : boxes) {
-        if (box.empty()) {
+    Aabb covered;
+    for (std::size_t r = 0; r < boxes.size(); ++r) {
+        const Aabb visible = visiblePart(boxes[r], cameraViewProjection);
+        if (visible.empty()) {
             continue;
         }
-        const Aabb light = box.transformed(result.view);
-        if (light.max.x < low.x || light.min.x > high.x || light.max.y < low.y || light.min.y > high.y) {
-            continue;
+        const Aabb receiver = visible.transformed(result.view);
+        const glm::vec2 receiverLow = glm::max(glm::vec2(receiver.min), glm::vec2(frustum.min));
+        const glm::vec2 receiverHigh = glm::min(glm::vec2(receiver.max), glm::vec2(frustum.max));
+        for (std::size_t c = 0; c < boxes.size(); ++c) {
+            const Aabb& caster = lightBoxes[c];
+            if (caster.empty() || caster.max.z <= receiver.min.z || (c == r && isPlanar(boxes[r]))) {
+                continue;
+            }
+            const glm::vec2 low = glm::max(receiverLow, glm::vec2(caster.min));
+            const glm::vec2 high = glm::min(receiverHigh, glm::vec2(caster.max));
+            if (low.x <= high.x && low.y <= high.y) {
+                covered.extend(glm::vec3(low, 0.0f));
+                covered.extend(glm::vec3(high, 0.0f));
+            }
         }
-        nearest = std::max(nearest, light.max.z);
-        farthest = std::min(farthest, light.min.z);
     }
-    const float depthMargin = 0.01f * std::max(nearest - farthest, 1e-3f);
+    if (covered.empty()) {
+        return result;
+    }
+    if (covered.min.x >= covered.max.x && covered.min.y >= covered.max.y) {
+        return result;
+    }
+    // A margin of 8 texels keeps the kernels, gathers and central differences of receivers at the region's
+    // edge inside the map (the border reads as lit).
+    const float margin = 8.0f * std::max(covered.max.x - covered.min.x, covered.max.y - covered.min.y) /
+                         static_cast<float>(resolution);
+    const glm::vec2 low = glm::vec2(covered.min) - margin;
+    const glm::vec2 high = glm::vec2(covered.max) + margin;
 
     float extent = std::max(high.x - low.x, high.y - low.y);
     glm::vec2 centre = 0.5f * (low + high);
@@ -218,6 +293,22 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
         centre = glm::floor(centre / texel) * texel;
     }
     const glm::vec2 half(0.5f * extent);
+    // Depth: the parts of the boxes over the map, towards the light and beyond the receivers. Only
+    // those parts: a large ground plane tilted in light space would otherwise stretch the range over all of
+    // itself, and filtered moments lose the depth differences of small casters in a long range.
+    float nearest = -std::numeric_limits<float>::max();
+    float farthest = std::numeric_limits<float>::max();
+    for (const Aabb& box : boxes) {
+        if (const std::optional<glm::vec2> span =
+                depthSpanOver(box, result.view, centre - half, centre + half)) {
+            farthest = std::min(farthest, span->x);
+            nearest = std::max(nearest, span->y);
+        }
+    }
+    if (farthest > nearest) {
+        return result;
+    }
+    const float depthMargin = 0.01f * std::max(nearest - farthest, 1e-3f);
     result.projection = glm::ortho(centre.x - half.x, centre.x + half.x, centre.y - half.y, centre.y + half.y,
                                    -nearest - depthMargin, -farthest + depthMargin);
     result.worldToShadow = kClipToTexture * result.projection * result.view;
@@ -347,13 +438,9 @@ LightProjection fitCascade(const glm::vec3& direction, const FitView& view, floa
     float top = centre.z + sphere.radius;
     float bottom = centre.z - sphere.radius;
     for (const Aabb& box : boxes) {
-        if (box.empty()) {
-            continue;
-        }
-        const Aabb light = box.transformed(result.view);
-        if (light.max.x >= middle.x - half && light.min.x <= middle.x + half &&
-            light.max.y >= middle.y - half && light.min.y <= middle.y + half) {
-            top = std::max(top, light.max.z);
+        if (const std::optional<glm::vec2> span =
+                depthSpanOver(box, result.view, middle - glm::vec2(half), middle + glm::vec2(half))) {
+            top = std::max(top, span->y);
         }
     }
     if (snapToTexels) {

@@ -202,7 +202,8 @@ const std::vector<SettingRow>& rows() {
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},
         {"cascadeCount", "", "cascades",
-         "Cascades of each directional light's shadow map. 1: one map fitted to the receivers in view. 2-4: "
+         "Cascades of each directional light's shadow map. 1: one map over where receivers in view can be "
+         "shadowed. 2-4: "
          "the "
          "view's depth range of visible receivers is split by the practical split scheme, each slice gets a "
          "map "

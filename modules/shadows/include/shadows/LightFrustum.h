@@ -37,11 +37,13 @@ struct LightProjection {
 
 /// @brief Fits an orthographic shadow frustum for a directional light shining along `direction`.
 ///
-/// Receivers are the boxes that intersect the camera frustum (`cameraViewProjection`); the map covers the
-/// part of them the camera can see (their light-space extent clipped to the camera frustum's), and its depth
-/// range extends towards the light over every box that overlaps that region, so casters outside the view
-/// still cast. With `snapToTexels`, the extent is quantised to 1/8-octave steps and the origin to whole
-/// texels, so a moving camera does not make shadow edges shimmer.
+/// Receivers are the parts of the boxes inside the camera frustum (`cameraViewProjection`); the map covers
+/// where they can be shadowed: each receiver's light-space extent (clipped to the camera frustum's) where
+/// some box that reaches nearer the light overlaps it (a flat box does not shadow itself). Its depth range
+/// spans the parts of every box over the map, towards the light too, so casters outside the view still cast
+/// and a large ground tilted in light space adds only its part under the map. Invalid when no visible
+/// receiver can be shadowed. With `snapToTexels`, the extent is quantised to 1/8-octave steps and the origin
+/// to whole texels, so a moving camera does not make shadow edges shimmer.
 LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4& cameraViewProjection,
                                     std::span<const Aabb> boxes, int resolution, bool snapToTexels);
 
@@ -101,8 +103,8 @@ Sphere frustumSliceSphere(const glm::mat4& projection, float sliceNear, float sl
 /// @brief Fits the orthographic map of one cascade of a directional light shining along `direction`: a square
 /// around the bounding sphere of the slice [sliceNear, sliceFar] of `view`, its origin snapped to whole
 /// texels when `snapToTexels` (the texel grid then stays fixed in world space: no shimmer), and its depth
-/// range extended towards the light over every box that overlaps the square, so casters outside the view
-/// still cast. Invalid when the slice is empty.
+/// range extended towards the light over the part of every box over the square (not all of a large ground),
+/// so casters outside the view still cast. Invalid when the slice is empty.
 LightProjection fitCascade(const glm::vec3& direction, const FitView& view, float sliceNear, float sliceFar,
                            std::span<const Aabb> boxes, int resolution, bool snapToTexels);
 

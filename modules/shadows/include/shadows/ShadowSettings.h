@@ -100,8 +100,8 @@ struct ShadowSettings {
     bool floorReceiverDepth = false;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
-    /// Cascades of each directional light's map (1: one map fitted to the visible receivers; 0: chosen from
-    /// the visible depth range, automaticCascadeCount).
+    /// Cascades of each directional light's map (1: one map over where visible receivers can be shadowed; 0:
+    /// chosen from the visible depth range, automaticCascadeCount).
     int cascadeCount = 0;
     /// Weight of the logarithmic scheme in the cascades' practical split scheme (0: uniform splits).
     float cascadeSplitWeight = 0.9f;

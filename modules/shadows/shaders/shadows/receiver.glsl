@@ -154,6 +154,9 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         return 1.0; // behind a perspective map's light: nothing is mapped (the light's falloff is zero there)
     }
     vec3 coord = clip.xyz / clip.w;
+    if (any(greaterThan(abs(coord.xy - 0.5), vec2(0.5)))) {
+        return 1.0; // outside the map: a directional map leaves out only receivers no caster can shadow
+    }
     lookup.coord = coord.xy;
     lookup.texel = coord.xy * gsShadowTexel[slot].x;
     // The depth bias: format steps of the stored depth, but no less than the arithmetic floor, which is a
