@@ -167,6 +167,14 @@ std::optional<glm::vec2> depthSpanOver(const Aabb& box, const glm::mat4& view, g
     if (box.empty()) {
         return std::nullopt;
     }
+    // Most boxes lie wholly beside or inside the rectangle: their light-space bounds answer without clipping.
+    const Aabb bounds = box.transformed(view);
+    if (bounds.max.x < low.x || bounds.min.x > high.x || bounds.max.y < low.y || bounds.min.y > high.y) {
+        return std::nullopt;
+    }
+    if (bounds.min.x >= low.x && bounds.max.x <= high.x && bounds.min.y >= low.y && bounds.max.y <= high.y) {
+        return glm::vec2(bounds.min.z, bounds.max.z);
+    }
     const auto corner = [&](int bits) {
         const glm::vec3 world((bits & 1) != 0 ? box.max.x : box.min.x,
                               (bits & 2) != 0 ? box.max.y : box.min.y,
