@@ -48,13 +48,13 @@ bool boxOccludes(const glm::vec3& origin, const glm::vec3& toLight) {
 
 /// Classifies lit/shadowed receivers facing the light, away from shadow edges by `band` world units.
 /// Receivers in view whose visibility the map decides: the map covers where shadows can fall, and receivers
-/// beyond it are lit without reading it.
+/// beyond it are lit without reading it, whatever the technique (counting them would dilute every rate).
 bool mapped(const ShadowMeasurement& m, const glm::vec3& p) {
     const glm::vec4 s = m.projections.front().worldToShadow * glm::vec4(p, 1.0f);
     return std::abs(s.x / s.w - 0.5f) <= 0.5f && std::abs(s.y / s.w - 0.5f) <= 0.5f;
 }
 
-ShadowErrors measureBoxScene(const ShadowMeasurement& m, float band, bool mappedOnly = false) {
+ShadowErrors measureBoxScene(const ShadowMeasurement& m, float band) {
     const glm::vec3 toLight = -sunDirection();
     const auto occluded = [&](const glm::vec3& p) { return boxOccludes(p, toLight); };
     ShadowErrors errors;
@@ -63,7 +63,7 @@ ShadowErrors measureBoxScene(const ShadowMeasurement& m, float band, bool mapped
             continue; // background, or a surface not facing the light (unlit by shading anyway)
         }
         const glm::vec3 p(m.position[i]);
-        if (mappedOnly && !mapped(m, p)) {
+        if (!mapped(m, p)) {
             continue;
         }
         if (awayFromShadowEdges(p, toLight, band, occluded)) {
@@ -138,12 +138,12 @@ const AccuracyCase kAccuracy[] = {
     {"receiverPlaneD24NoDepthBias", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, 0.0f, false,
      0.06, 0.005, 0.08},
     // ...and flooring the reference to the format's step removes that rounding acne entirely for D16. A D24
-    // step
-    // (6e-8) is one float32 ulp at depth 0.5, so the floor computed in float only halves it there.
+    // step (6e-8) is one float32 ulp at depth 0.5, so the floor computed in float barely helps there (5.4 %
+    // acne without it, 4.8 % with it).
     {"receiverPlaneD16Floor", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D16, 0.0f, 0.0f, true, 0.002,
      0.005, 0.002},
-    {"receiverPlaneD24Floor", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, 0.0f, true, 0.025,
-     0.005, 0.04},
+    {"receiverPlaneD24Floor", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, 0.0f, true, 0.06,
+     0.005, 0.06},
 };
 
 class ShadowAccuracyGLTest : public testing::TestWithParam<AccuracyCase> {};
@@ -167,7 +167,7 @@ TEST_P(ShadowAccuracyGLTest, AcneAndLeakStayUnderMeasuredThresholds) {
     std::cout << "[ measured ] " << c.name << ": acne " << errors.acneRate() << " of " << errors.litPixels
               << " lit, leak " << errors.leakRate() << " of " << errors.shadowedPixels
               << " shadowed, darkening " << errors.darkening() << "\n";
-    EXPECT_GT(errors.litPixels, 10000u);
+    EXPECT_GT(errors.litPixels, 2000u); // the box's top and sides and the ground under its footprint: 3385
     EXPECT_GT(errors.shadowedPixels, 2000u);
     EXPECT_LE(errors.acneRate(), c.maxAcne);
     EXPECT_LE(errors.leakRate(), c.maxLeak);
@@ -175,8 +175,7 @@ TEST_P(ShadowAccuracyGLTest, AcneAndLeakStayUnderMeasuredThresholds) {
 }
 
 TEST(ShadowReproductionGLTest, NaivePcfOverGsmDarkensLitSurfacesByAboutAHalf) {
-    // GSM multisampling reference, Fig. 4.2.3: uncorrected taps lose roughly half the light on lit surfaces
-    // (those the map covers: elsewhere no caster can shadow and nothing is read).
+    // GSM multisampling reference, Fig. 4.2.3: uncorrected taps lose roughly half the light on lit surfaces.
     engine::EntityId camera = engine::kNoEntity;
     const engine::Scene scene = boxOnPlane(camera);
     ShadowSettings settings;
@@ -185,7 +184,7 @@ TEST(ShadowReproductionGLTest, NaivePcfOverGsmDarkensLitSurfacesByAboutAHalf) {
     settings.pcfRadius = 2.5f;
     settings.resolution = 1024;
     const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
-    const ShadowErrors errors = measureBoxScene(m, 4.0f * m.texelWorldSize + 0.02f, true);
+    const ShadowErrors errors = measureBoxScene(m, 4.0f * m.texelWorldSize + 0.02f);
     std::cout << "[ measured ] naive 6x6 darkening " << errors.darkening() << "\n";
     EXPECT_GT(errors.darkening(), 0.3);
     EXPECT_LT(errors.darkening(), 0.6);
