@@ -46,7 +46,6 @@ bool boxOccludes(const glm::vec3& origin, const glm::vec3& toLight) {
     return crossing.enter < crossing.exit;
 }
 
-/// Classifies lit/shadowed receivers facing the light, away from shadow edges by `band` world units.
 /// Receivers in view whose visibility the map decides: the map covers where shadows can fall, and receivers
 /// beyond it are lit without reading it, whatever the technique (counting them would dilute every rate).
 bool mapped(const ShadowMeasurement& m, const glm::vec3& p) {
@@ -54,6 +53,8 @@ bool mapped(const ShadowMeasurement& m, const glm::vec3& p) {
     return std::abs(s.x / s.w - 0.5f) <= 0.5f && std::abs(s.y / s.w - 0.5f) <= 0.5f;
 }
 
+/// Classifies lit/shadowed receivers facing the light, inside the map, away from shadow edges by `band` world
+/// units.
 ShadowErrors measureBoxScene(const ShadowMeasurement& m, float band) {
     const glm::vec3 toLight = -sunDirection();
     const auto occluded = [&](const glm::vec3& p) { return boxOccludes(p, toLight); };
