@@ -166,6 +166,29 @@ TEST(GroundTruthTest, SpotLightBlockedOnlyBetweenLightAndSurface) {
     EXPECT_EQ(visibility[0], 0.0f);
 }
 
+TEST(GroundTruthTest, ASmoothedNormalThroughItsFacetDoesNotShadowItsOwnPoint) {
+    // Real models' smoothed normals can point through their own facets (the at-at's lean up to 45° past
+    // them). Here the ground's normals face the viewer but dip below the ground, and the sun is overhead:
+    // nothing blocks it, so every point is lit. Offsetting the ray along such a normal would start it under
+    // the ground, which would then shadow its own point.
+    engine::Scene scene;
+    testsupport::addGround(scene, 20.0f);
+    RayTracedVisibility tracer(scene);
+    const glm::vec3 viewer(0.0f, 3.0f, -20.0f);
+    tracer.setViewer(viewer);
+    GroundSamples s = groundGrid(4.0f, 20);
+    for (std::size_t i = 0; i < s.positions.size(); ++i) {
+        s.normals[i] = glm::normalize(glm::vec3(0.0f, -0.5f, -1.0f));
+        ASSERT_GT(glm::dot(s.normals[i], viewer - s.positions[i]),
+                  0.0f); // it faces the viewer, like the G-buffer's
+    }
+    std::vector<float> visibility(s.positions.size());
+    tracer.hardVisibility(s.positions, s.normals, s.covered, sun({0.1f, -1.0f, 0.2f}), visibility);
+    for (std::size_t i = 0; i < s.positions.size(); ++i) {
+        EXPECT_EQ(visibility[i], 1.0f) << "at " << s.positions[i].x << ", " << s.positions[i].z;
+    }
+}
+
 TEST(GroundTruthTest, SoftVisibilityIsTheUnblockedFractionOfTheDisk) {
     engine::Scene scene;
     const auto wall = scene.create("half-plane");

@@ -55,6 +55,9 @@ RayTracedVisibility::RayTracedVisibility(const engine::Scene& source) {
     RTCScene sc = rtcNewScene(dev);
     scene_ = sc;
     rtcSetSceneBuildQuality(sc, RTC_BUILD_QUALITY_HIGH);
+    // Watertight intersection: a ray through a shared edge or vertex hits one of its triangles (the lookup of
+    // the facet under a pixel must not slip between two; shadow rays must not leak through seams).
+    rtcSetSceneFlags(sc, RTC_SCENE_FLAG_ROBUST);
     glm::vec3 low(std::numeric_limits<float>::max());
     glm::vec3 high(-std::numeric_limits<float>::max());
     source.forEach([&](engine::EntityId id, const engine::Entity& entity) {
@@ -125,6 +128,43 @@ void RayTracedVisibility::castShadowRays(std::span<const glm::vec3> origins,
     }
 }
 
+glm::vec3 RayTracedVisibility::rayOrigin(const glm::vec3& position, const glm::vec3& normal,
+                                         float offset) const {
+    if (!viewer_) {
+        return position + offset * normal;
+    }
+    // The triangle under the point: a short segment along the line of sight through it, starting a few
+    // offsets in front (nothing nearer the viewer lies there, or it would have been seen instead).
+    const glm::vec3 sight = position - *viewer_;
+    const float distance = glm::length(sight);
+    if (!(distance > 0.0f)) {
+        return position + offset * normal;
+    }
+    const glm::vec3 along = sight / distance;
+    const float reach = 4.0f * offset;
+    RTCRayHit hit{};
+    hit.ray.org_x = position.x - reach * along.x;
+    hit.ray.org_y = position.y - reach * along.y;
+    hit.ray.org_z = position.z - reach * along.z;
+    hit.ray.dir_x = along.x;
+    hit.ray.dir_y = along.y;
+    hit.ray.dir_z = along.z;
+    hit.ray.tnear = 0.0f;
+    hit.ray.tfar = 2.0f * reach;
+    hit.ray.mask = ~0u;
+    hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect1(scene(scene_), &context, &hit);
+    const glm::vec3 facet(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z);
+    const float facetLength = glm::length(facet);
+    if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID || !(facetLength > 0.0f)) {
+        return position + offset * normal;
+    }
+    const glm::vec3 towardsViewer = glm::dot(facet, along) > 0.0f ? -facet : facet;
+    return position + (offset / facetLength) * towardsViewer;
+}
+
 void RayTracedVisibility::hardVisibility(std::span<const glm::vec3> positions,
                                          std::span<const glm::vec3> normals,
                                          std::span<const std::uint8_t> covered,
@@ -153,6 +193,7 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
             viewer_ ? std::max(std::min(sceneOffset, 1e-4f * glm::length(positions[i] - *viewer_)),
                                1e-5f * std::max({magnitude.x, magnitude.y, magnitude.z}))
                     : sceneOffset;
+        const glm::vec3 origin = rayOrigin(positions[i], normals[i], offset);
         glm::vec3 direction;
         float length = 0.0f;
         towardsLight(light, positions[i], direction, length);
@@ -180,7 +221,7 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                         target = (point - positions[i]) / segment;
                     }
                 }
-                origins.push_back(positions[i] + offset * normals[i]);
+                origins.push_back(origin);
                 directions.push_back(target);
                 lengths.push_back(std::isinf(segment) ? std::numeric_limits<float>::infinity()
                                                       : segment * 0.9999f);

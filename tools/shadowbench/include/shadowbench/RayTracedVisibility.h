@@ -23,11 +23,14 @@ public:
 
     /// @brief Hard visibility of a sun, spot or point light: 1 where the segment from the surface to the
     /// light (for a sun: the ray towards it) is free, 0 where it is blocked. Pixels with `covered[i] == 0`
-    /// get 0. The ray starts a small offset along `normals[i]`, so a surface never shadows itself by
-    /// rounding: 1e-4 of the scene size, or, once setViewer names where the pixels are seen from, 1e-4 of the
-    /// distance from it (a tenth of a pixel's footprint or less), so the offset does not shorten shadows near
-    /// the camera in a kilometre-wide scene; never below 1e-5 of the point's largest coordinate (float's
-    /// resolution there, with margin).
+    /// get 0. The ray starts a small offset off the surface, so a surface never shadows itself by rounding:
+    /// 1e-4 of the scene size, or, once setViewer names where the pixels are seen from, 1e-4 of the distance
+    /// from it (a tenth of a pixel's footprint or less), so the offset does not shorten shadows near the
+    /// camera in a kilometre-wide scene; never below 1e-5 of the point's largest coordinate (float's
+    /// resolution there, with margin). The offset follows `normals[i]`, or, once setViewer is called, the
+    /// geometric normal of the triangle seen at the point, on the viewer's side: a shading normal may point
+    /// through its own triangle (real models' smoothed normals do, up to 45° off), and an offset along it
+    /// starts the ray behind the surface, which then shadows itself.
     void hardVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light,
                         std::span<float> visibility) const;
@@ -46,6 +49,9 @@ public:
     [[nodiscard]] float sceneSize() const { return sceneSize_; }
 
 private:
+    /// Where each shadow ray starts: `positions[i]` moved `offset` off the surface (see hardVisibility).
+    [[nodiscard]] glm::vec3 rayOrigin(const glm::vec3& position, const glm::vec3& normal, float offset) const;
+
     /// Casts one ray per entry of `directions`/`lengths` from `origins`, writing 1 for free and 0 for
     /// blocked.
     void castShadowRays(std::span<const glm::vec3> origins, std::span<const glm::vec3> directions,
