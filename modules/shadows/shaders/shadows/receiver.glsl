@@ -115,10 +115,27 @@ vec3 gsShadowDerivative(mat4 m, vec4 clip, vec3 d) {
     return (dClip.xyz - clip.xyz * (dClip.w / clip.w)) / clip.w;
 }
 
+// The receiver's own facet, on the side the camera sees: with window x right and y up, dP/dx × dP/dy faces the
+// viewer (the derivatives of the interpolated position stay within one triangle). The depths in the map come
+// from facets; an interpolated normal bends across creases, and real models' smoothed normals point up to 45°
+// and more through their own facets, so biases along them move lookups behind the surface. The derivatives
+// are rescaled before the cross product so that a tiny scene's does not underflow; an edge-on facet (no area
+// on screen) keeps `shadingNormal`.
+vec3 gsFacetNormal(vec3 dPdx, vec3 dPdy, vec3 shadingNormal) {
+    vec3 magnitude = max(abs(dPdx), abs(dPdy));
+    float scale = max(max(magnitude.x, magnitude.y), magnitude.z);
+    if (!(scale > 0.0) || isinf(scale)) {
+        return shadingNormal;
+    }
+    vec3 facet = cross(dPdx / scale, dPdy / scale);
+    float area = length(facet);
+    return area > 1e-12 ? facet / area : shadingNormal;
+}
+
 // The screen derivatives a fragment's lookups need, taken once before any per-fragment choice of map.
 struct GsShadowFragment {
     vec3 position;
-    vec3 normal;
+    vec3 normal; // the facet's (gsFacetNormal)
     vec3 toLight;
     vec3 dPdx; // world position per pixel
     vec3 dPdy;
@@ -184,11 +201,7 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
 #endif
     lookup.tangentGradient = vec2(0.0);
 #ifdef GS_SHADOW_TANGENT_PLANE
-    // The facet's own plane (derivatives of the interpolated position stay within one triangle), not the
-    // interpolated normal, which bends across creases: the depths in the map come from facets.
-    vec3 facetNormal = cross(fragment.dPdx, fragment.dPdy);
-    facetNormal = dot(facetNormal, fragment.normal) < 0.0 ? -facetNormal : facetNormal;
-    lookup.tangentGradient = gsTangentPlaneGradient(m, fragment.position, facetNormal, gsShadowTexel[slot].x);
+    lookup.tangentGradient = gsTangentPlaneGradient(m, fragment.position, fragment.normal, gsShadowTexel[slot].x);
 #endif
     lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
@@ -220,8 +233,10 @@ int gsDebugMap = -1;
 
 float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
     // Screen derivatives must be taken before any per-pixel branch (a quad's fragments may pick other maps).
+    vec3 dPdx = dFdxFine(worldPosition);
+    vec3 dPdy = dFdyFine(worldPosition);
     GsShadowFragment fragment =
-        GsShadowFragment(worldPosition, normal, toLight, dFdxFine(worldPosition), dFdyFine(worldPosition));
+        GsShadowFragment(worldPosition, gsFacetNormal(dPdx, dPdy, normal), toLight, dPdx, dPdy);
     GsShadowLightMaps maps = gsShadowLights[lightIndex];
     int kind = maps.kind.x;
     if (kind == GS_SHADOW_LIGHT_CUBE) {
