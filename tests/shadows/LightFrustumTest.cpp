@@ -88,6 +88,31 @@ TEST(LightFrustumTest, DirectionalMapCoversWhereShadowsCanFallNotTheWholeGroundI
     }
 }
 
+TEST(LightFrustumTest, DirectionalMapsLitBorderHoldsNothingThatCanBeShadowed) {
+    // The map's outer band, where lookups are lit without reading it, is the margin beyond where shadows can
+    // fall: several texels wide (8 less snapping), and no point of the model or of its shadow lies in it.
+    const std::vector<Aabb> boxes = {box({-20, 0, -20}, {20, 0, 20}),
+                                     box({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f})};
+    for (const bool snap : {false, true}) {
+        const LightProjection p =
+            fitDirectionalLight(kSun, cameraLookingAt({0, 6, 12}, {0, 0, 0}), boxes, 1024, snap);
+        ASSERT_TRUE(p.valid);
+        EXPECT_GE(p.litBorderTexels, snap ? 6.0f : 7.0f);
+        const float inner = 0.5f - p.litBorderTexels / 1024.0f;
+        for (const glm::vec3& corner : boxes[1].corners()) {
+            const glm::vec3 onGround = corner + kSun * (-corner.y / kSun.y);
+            for (const glm::vec3& point : {corner, onGround}) {
+                const glm::vec3 s = toShadow(p, point);
+                EXPECT_LE(std::max(std::abs(s.x - 0.5f), std::abs(s.y - 0.5f)), inner) << s.x << " " << s.y;
+            }
+        }
+    }
+    // Spot maps have no such band: their edges are the cone's, which shadows reach.
+    const LightProjection spot = fitSpotLight({0, 5, 0}, {0, -1, 0}, 0.6f, 20.0f, boxes, 1024);
+    ASSERT_TRUE(spot.valid);
+    EXPECT_EQ(spot.litBorderTexels, 0.0f);
+}
+
 TEST(LightFrustumTest, DirectionalMapDepthSpansOnlyWhatLiesOverTheMap) {
     // An 800 m ground spans hundreds of metres of light-space depth under a low sun; over the model's
     // footprint it spans a few. Filtered moments need that short range to tell a small caster from the

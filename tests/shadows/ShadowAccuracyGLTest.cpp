@@ -242,6 +242,46 @@ TEST(ShadowFacetGLTest, BiasesFollowTheFacetNotItsSmoothedNormals) {
     }
 }
 
+TEST(ShadowMapEdgeGLTest, TheGroundAroundTheMapsEdgeIsLit) {
+    // The map covers where the box's shadow can fall, plus a margin, and the camera sees ground far beyond
+    // it. Lookups near the map's edge must not read across it: a kernel, fit or central difference over the
+    // border's far depth would predict taps far behind the receiver, which then look shadowed (dotted lines
+    // along the map's outline). Every non-naive technique at its defaults keeps all of that ground lit.
+    engine::EntityId camera = engine::kNoEntity;
+    const engine::Scene scene = boxOnPlane(camera);
+    const glm::vec3 toLight = -sunDirection();
+    for (const ShadowTechniqueTraits& traits : techniqueTable()) {
+        if (traits.naive) {
+            continue;
+        }
+        ShadowSettings settings;
+        settings.technique = traits.technique;
+        settings.resolution = 1024;
+        const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
+        const float band = 3.0f * m.texelWorldSize + 0.02f;
+        std::size_t nearTheEdge = 0;
+        std::size_t darkened = 0;
+        for (std::size_t i = 0; i < m.visibility.size(); ++i) {
+            const glm::vec3 p(m.position[i]);
+            if (m.position[i].w < 0.5f || std::abs(p.y) > 1e-3f || boxOccludes(p, toLight) ||
+                !awayFromShadowEdges(p, toLight, band,
+                                     [&](const glm::vec3& q) { return boxOccludes(q, toLight); })) {
+                continue;
+            }
+            const glm::vec4 s = m.projections.front().worldToShadow * glm::vec4(p, 1.0f);
+            const float fromCentre = std::max(std::abs(s.x / s.w - 0.5f), std::abs(s.y / s.w - 0.5f));
+            if (std::abs(fromCentre - 0.5f) * 1024.0f <= 10.0f) {
+                ++nearTheEdge; // within 10 texels of the map's edge, inside or out
+                darkened += m.visibility[i] < 0.99f;
+            }
+        }
+        std::cout << "[ measured ] " << traits.name << ": " << darkened << " of " << nearTheEdge
+                  << " lit ground pixels near the map's edge darkened\n";
+        EXPECT_GT(nearTheEdge, 500u) << traits.name;
+        EXPECT_EQ(darkened, 0u) << traits.name;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowAccuracyGLTest, testing::ValuesIn(kAccuracy),
                          [](const auto& test) { return std::string(test.param.name); });
 

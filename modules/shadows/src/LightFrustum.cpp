@@ -321,6 +321,10 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
                                    -nearest - depthMargin, -farthest + depthMargin);
     result.worldToShadow = kClipToTexture * result.projection * result.view;
     result.texelScale = extent / static_cast<float>(resolution);
+    const glm::vec2 belowCovered = glm::vec2(covered.min) - (centre - half);
+    const glm::vec2 aboveCovered = (centre + half) - glm::vec2(covered.max);
+    const float coveredToEdge = std::min({belowCovered.x, belowCovered.y, aboveCovered.x, aboveCovered.y});
+    result.litBorderTexels = std::max(std::floor(coveredToEdge / result.texelScale), 0.0f);
     result.valid = true;
     return result;
 }

@@ -38,7 +38,8 @@ struct alignas(16) ShadowBlock {
     glm::mat4 worldToShadow[kMaxMaps];
     /// x resolution, y 1/resolution, z texel scale, w 1 for perspective maps.
     glm::vec4 texel[kMaxMaps];
-    /// xy: near and far of a perspective map, zero for orthographic ones.
+    /// xy: near and far of a perspective map, zero for orthographic ones; z: the lit border in texels
+    /// (LightProjection::litBorderTexels).
     glm::vec4 depthRange[kMaxMaps];
     LightMapsBlock lights[engine::ForwardRenderer::kMaxLights];
     /// The fit camera's view depth of a world point is dot(viewDepth, (p, 1)).

@@ -371,7 +371,7 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
-        block.depthRange[slot] = glm::vec4(projection.depthRange, 0.0f, 0.0f);
+        block.depthRange[slot] = glm::vec4(projection.depthRange, projection.litBorderTexels, 0.0f);
     }
     std::copy(lights.begin(), lights.end(), block.lights);
     // View depth is -z in view space: minus the view matrix's third row.

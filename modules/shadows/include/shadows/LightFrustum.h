@@ -31,6 +31,11 @@ struct LightProjection {
     float texelScale = 0.0f;
     /// Perspective: the near and far plane distances; zero for orthographic maps (gsLinearDepth).
     glm::vec2 depthRange{0.0f};
+    /// A fitted directional map: the width, in whole texels, of its outer band where no receiver can be
+    /// shadowed (the margin beyond where shadows can fall). Lookups there are lit without reading the map, so
+    /// no kernel, fit or central difference straddles the map's edge. Zero for cascades, spot maps and cube
+    /// faces, whose edges shadows may reach.
+    float litBorderTexels = 0.0f;
     /// False when nothing visible can receive a shadow from this light (no map needs drawing).
     bool valid = false;
 };

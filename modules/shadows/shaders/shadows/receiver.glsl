@@ -171,8 +171,11 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         return 1.0; // behind a perspective map's light: nothing is mapped (the light's falloff is zero there)
     }
     vec3 coord = clip.xyz / clip.w;
-    if (any(greaterThan(abs(coord.xy - 0.5), vec2(0.5)))) {
-        return 1.0; // outside the map: a directional map leaves out only receivers no caster can shadow
+    // Outside the map, or in a fitted directional map's lit border: no caster can shadow the receiver there,
+    // and its kernel would read across the map's edge (a fit or central difference over the border's far
+    // depth predicts taps far behind the receiver, which then look shadowed).
+    if (any(greaterThan(abs(coord.xy - 0.5), vec2(0.5 - gsShadowDepthRange[slot].z * gsShadowTexel[slot].y)))) {
+        return 1.0;
     }
     lookup.coord = coord.xy;
     lookup.texel = coord.xy * gsShadowTexel[slot].x;
