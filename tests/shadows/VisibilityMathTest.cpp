@@ -452,12 +452,13 @@ TEST(AdaptiveBiasMathTest, PerspectiveMapPredictsThePlaneDepthExactlyAcrossTexel
 
 TEST(VisibilityMathTest, NearerCorrectionDarkensAConcaveCreaseNoMoreThanEitherReference) {
     // Two planes meeting in a concave crease 1.2 texels to the fragment's right: beyond it the surface rises
-    // towards the light (depth falls). The point gradient is the fragment's own plane's.
+    // towards the light (depth falls) past the fragment's own depth. The point gradient is the fragment's own
+    // plane's.
     const TapPattern p = TapPattern::make(TapLayout::Grid, 4, 1.5f);
     const glm::vec2 own(3e-4f, 1e-4f);
     auto crease = [&](glm::vec2 o) {
         const float beyond = std::max(o.x - 1.2f, 0.0f);
-        return 0.5f + glm::dot(o, own) - 8e-4f * beyond;
+        return 0.5f + glm::dot(o, own) - 4e-3f * beyond;
     };
     const Taps taps = sample(p, crease, {});
     const float receiver = crease({});
@@ -471,4 +472,28 @@ TEST(VisibilityMathTest, NearerCorrectionDarkensAConcaveCreaseNoMoreThanEitherRe
     auto plane = [&](glm::vec2 o) { return 0.5f + glm::dot(o, own); };
     const Taps flat = sample(p, plane, {});
     EXPECT_EQ(pcfGsm(p, flat, plane({}) - 1e-6f, own, g::GS_CORRECTION_NEARER), 1.0f);
+}
+
+TEST(VisibilityMathTest, NoTapIsComparedDeeperThanTheFragment) {
+    // Only what lies nearer the light than the fragment can occlude it. Two cases where a downhill prediction
+    // meets a surface that is deeper than the fragment but nearer than the prediction: corrections that
+    // follow the fragment's own gradient must see it lit (the fitted ones also bend their gradient to the
+    // other surface, which the concave-crease tests cover).
+    const TapPattern p = TapPattern::make(TapLayout::Grid, 4, 1.5f);
+    const glm::vec2 steep(2e-3f, 0.0f);
+    // A convex limb: the receiver falls away steeply and ends 0.8 texels to the right, where the map shows
+    // the background 1e-3 behind the fragment, short of the 3e-3 the gradient extrapolates to.
+    auto limb = [&](glm::vec2 o) { return o.x < 0.8f ? 0.5f + glm::dot(o, steep) : 0.501f; };
+    // A mild concave crease whose far side rises, but stays deeper than the fragment.
+    auto crease = [&](glm::vec2 o) {
+        return 0.5f + glm::dot(o, steep) - 1.5e-3f * std::max(o.x - 0.8f, 0.0f);
+    };
+    for (const auto& surface :
+         {std::function<float(glm::vec2)>(limb), std::function<float(glm::vec2)>(crease)}) {
+        const Taps taps = sample(p, surface, {});
+        for (const int correction : {g::GS_CORRECTION_POINT, g::GS_CORRECTION_NEARER}) {
+            EXPECT_EQ(pcfGsm(p, taps, surface({}) - 1e-6f, steep, correction), 1.0f)
+                << "correction " << correction;
+        }
+    }
 }

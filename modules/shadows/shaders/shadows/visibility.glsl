@@ -157,7 +157,7 @@ const int GS_CORRECTION_QUADRATIC = 3; // taps follow a least-squares quadric of
 const int GS_CORRECTION_NEARER = 4;
 
 // PCF over GSM: the average of the fuzzy visibilities of the taps, each compared at the receiver depth the
-// chosen correction predicts for it. `pointGradient` is used by GS_CORRECTION_POINT and for the fuzzy width of
+// chosen correction predicts for it, or at the fragment's own where the prediction lies deeper. `pointGradient` is used by GS_CORRECTION_POINT and for the fuzzy width of
 // GS_CORRECTION_NONE; the fitted corrections use their own gradient for both.
 float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS], int count, float receiverDepth,
                          vec2 pointGradient, int correction, mat2 inverseCovariance,
@@ -181,6 +181,11 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
         } else if (correction != GS_CORRECTION_NONE) {
             tapDepth = gsTapReceiverDepth(receiverDepth, offsets[i], gradient);
         }
+        // Only what lies nearer the light than the fragment can occlude it, so a tap is never compared deeper
+        // than the fragment's own depth (the bias reference's min(0, bias) clamp, "Applications"). Downhill
+        // predictions add nothing but risk: beyond the receiver's own silhouette in the map (a convex limb) a
+        // steep gradient extrapolates past the background behind it, which then looks like an occluder.
+        tapDepth = min(tapDepth, receiverDepth);
         sum += gsFuzzyVisibility(depths[i], tapDepth, magnitude, fuzzyScale, minimumWidth);
     }
     return gsSaturate(sum / float(max(count, 1)));
