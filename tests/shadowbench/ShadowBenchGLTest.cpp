@@ -43,6 +43,7 @@ const std::map<ShadowTechnique, Limit>& exceptions() {
         {ShadowTechnique::JitteredPcf, {0.0026, 0.01, 0.005}},
         {ShadowTechnique::AdaptiveBias, {0.0015, 0.0005, 0.005}},
         {ShadowTechnique::PcfAdaptiveBias, {0.0034, 0.0005, 0.014}},
+        {ShadowTechnique::PcfGsmConnected, {0.0005, 0.0007, 0.005}},
     };
     return limits;
 }

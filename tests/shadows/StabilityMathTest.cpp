@@ -87,6 +87,21 @@ TEST(StabilityMathTest, PcfOverGsmCorrectionsAreBoundedAtExtremeSlopes) {
                     worst = std::max(worst, std::abs(static_cast<double>(v) - exact));
                 }
             }
+            float previous = -1.0f;
+            for (int k = 0; k <= 20; ++k) {
+                const float receiver = base + 1e-3f - static_cast<float>(k) * 1e-4f;
+                const float v = f::gsPcfGsmConnectedVisibility(
+                    depths, offsets, pattern.nearestFirst.data(), n, pattern.linkDistance, receiver,
+                    glm::vec2(slope, 0.0f), 1.0f, 1.0f / 16777215.0f);
+                ASSERT_TRUE(unitRange(v)) << "connected, slope " << slope;
+                ASSERT_GE(v, previous - 1e-6f) << "connected: not monotone in bias";
+                previous = v;
+                const double exact =
+                    d::gsPcfGsmConnectedVisibility(depthsDouble, offsetsDouble, pattern.nearestFirst.data(),
+                                                   n, static_cast<double>(pattern.linkDistance), receiver,
+                                                   glm::dvec2(slope, 0.0), 1.0, 1.0 / 16777215.0);
+                worst = std::max(worst, std::abs(static_cast<double>(v) - exact));
+            }
         }
     }
     std::cout << "[ measured ] PCF over GSM: max |float - double| = " << worst << "\n";

@@ -60,3 +60,18 @@ TEST(JitterTexelsTest, EveryTapStaysInItsStratumAndTestTapsSpread) {
     EXPECT_LT(low.y, grid.y / 2);
     EXPECT_GE(high.y, grid.y / 2);
 }
+
+TEST(TapPatternTest, LinksListTapsNearestFirstAndJoinGridNeighbours) {
+    const TapPattern grid = TapPattern::make(TapLayout::Grid, 4, 1.5f); // one texel between taps
+    ASSERT_EQ(grid.nearestFirst.size(), 16u);
+    for (std::size_t k = 1; k < grid.nearestFirst.size(); ++k) {
+        EXPECT_LE(glm::length(grid.offsets[static_cast<std::size_t>(grid.nearestFirst[k - 1])]),
+                  glm::length(grid.offsets[static_cast<std::size_t>(grid.nearestFirst[k])]));
+    }
+    EXPECT_FLOAT_EQ(glm::length(grid.offsets[static_cast<std::size_t>(grid.nearestFirst[0])]),
+                    std::sqrt(0.5f));
+    EXPECT_FLOAT_EQ(grid.linkDistance, 1.5f); // diagonal neighbours (1.41) are joined, two apart (2) are not
+    const TapPattern poisson = TapPattern::make(TapLayout::Poisson, 16, 1.5f);
+    EXPECT_GT(poisson.linkDistance, 0.0f);
+    EXPECT_LT(poisson.linkDistance, 3.0f);
+}

@@ -474,6 +474,52 @@ TEST(VisibilityMathTest, NearerCorrectionDarkensAConcaveCreaseNoMoreThanEitherRe
     EXPECT_EQ(pcfGsm(p, flat, plane({}) - 1e-6f, own, g::GS_CORRECTION_NEARER), 1.0f);
 }
 
+namespace {
+
+float connected(const TapPattern& pattern, const Taps& taps, float receiverDepth, glm::vec2 gradient) {
+    return g::gsPcfGsmConnectedVisibility(taps.depths, taps.offsets, pattern.nearestFirst.data(), taps.count,
+                                          pattern.linkDistance, receiverDepth, gradient, 1.0f, kD24Step);
+}
+
+} // namespace
+
+TEST(VisibilityMathTest, ConnectedTapsLightAConcaveCreaseEveryOtherCorrectionDarkens) {
+    // A crease 0.6 texels right of the fragment whose far face rises (slope -6e-4 per texel against the
+    // fragment's 3e-4) past the fragment's depth: every prediction through the fragment fails there, but the
+    // stored depth runs on without a jump.
+    for (const TapPattern& p :
+         {TapPattern::make(TapLayout::Grid, 4, 1.5f), TapPattern::make(TapLayout::Grid, 5, 2.0f),
+          TapPattern::make(TapLayout::Poisson, 16, 1.5f)}) {
+        const glm::vec2 own(3e-4f, 1e-4f);
+        auto crease = [&](glm::vec2 o) {
+            return 0.5f + glm::dot(o, own) - 9e-4f * std::max(o.x - 0.6f, 0.0f);
+        };
+        const Taps taps = sample(p, crease, {});
+        const float receiver = crease({}) - 1e-6f;
+        EXPECT_LT(pcfGsm(p, taps, receiver, own, g::GS_CORRECTION_NEARER), 1.0f);
+        EXPECT_EQ(connected(p, taps, receiver, own), 1.0f) << toString(p.layout);
+    }
+}
+
+TEST(VisibilityMathTest, ConnectedTapsKeepAShadowsEdge) {
+    // An occluder's edge 0.3 texels right of the fragment: beyond it the map jumps 0.01 nearer the light. The
+    // jump joins nothing, so those taps stay shadowed exactly as under the point gradient; a fragment under
+    // the occluder stays in shadow.
+    const TapPattern p = TapPattern::make(TapLayout::Grid, 4, 1.5f);
+    const glm::vec2 own(3e-4f, 1e-4f);
+    auto edge = [&](glm::vec2 o) { return 0.5f + glm::dot(o, own) - (o.x > 0.3f ? 0.01f : 0.0f); };
+    const Taps taps = sample(p, edge, {});
+    const float receiver = 0.5f - 1e-6f;
+    const float point = pcfGsm(p, taps, receiver, own, g::GS_CORRECTION_POINT);
+    EXPECT_NEAR(point, 0.5f, 1e-6f);
+    EXPECT_EQ(connected(p, taps, receiver, own), point);
+    const Taps under = sample(p, edge, {3.0f, 0.0f});
+    EXPECT_NEAR(connected(p, under, receiver + dot(glm::vec2(3.0f, 0.0f), own), own), 0.0f, 1e-6f);
+    // A facing plane (zero gradient) with the same edge: still the same split, and nothing divides by zero.
+    auto flatEdge = [](glm::vec2 o) { return o.x > 0.3f ? 0.49f : 0.5f; };
+    EXPECT_NEAR(connected(p, sample(p, flatEdge, {}), receiver, {}), 0.5f, 1e-6f);
+}
+
 TEST(VisibilityMathTest, NoTapIsComparedDeeperThanTheFragment) {
     // Only what lies nearer the light than the fragment can occlude it. Two cases where a downhill prediction
     // meets a surface that is deeper than the fragment but nearer than the prediction: corrections that

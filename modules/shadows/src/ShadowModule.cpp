@@ -358,6 +358,13 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         glProgramUniform1fv(id, location, static_cast<GLsizei>(pattern_.quadraticFitRows.size()),
                             pattern_.quadraticFitRows.data());
     }
+    if (const GLint location = program.uniformLocation("gsTapNearestFirst"); location >= 0) {
+        glProgramUniform1iv(id, location, static_cast<GLsizei>(pattern_.nearestFirst.size()),
+                            pattern_.nearestFirst.data());
+    }
+    if (const GLint location = program.uniformLocation("gsTapLinkDistance"); location >= 0) {
+        glProgramUniform1f(id, location, pattern_.linkDistance);
+    }
 }
 
 void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit) {

@@ -206,6 +206,18 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_ADAPTIVE_PCF", "GS_SHADOW_TANGENT_PLANE"},
      .usesTapPattern = true,
      .biasesDepth = true},
+    {.technique = T::PcfGsmConnected,
+     .name = "pcf-gsm-connected",
+     .summary = "PCF over GSM, taps at the point gradient's prediction (never deeper than the fragment); a "
+                "failing tap that continues a lit nearer one without a jump is the receiver's own surface "
+                "(a concave crease) and counts as lit, since shadows' edges are jumps in the map",
+     .reference = "ours: docs/SHADOWS.md, \"Connected taps\"",
+     .sampler = S::DepthLinear,
+     .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_CONNECTED"},
+     .readsPointGradient = true,
+     .usesTapPattern = true,
+     .biasesDepth = true,
+     .fuzzyComparison = true},
 }};
 
 } // namespace

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <numeric>
 #include <stdexcept>
 
 namespace shadows {
@@ -114,6 +116,27 @@ bool invert6(std::array<std::array<double, 6>, 6>& m) {
     return true;
 }
 
+void precomputeLinks(TapPattern& pattern) {
+    const std::vector<glm::vec2>& offsets = pattern.offsets;
+    pattern.nearestFirst.resize(offsets.size());
+    std::iota(pattern.nearestFirst.begin(), pattern.nearestFirst.end(), 0);
+    std::stable_sort(pattern.nearestFirst.begin(), pattern.nearestFirst.end(),
+                     [&](int a, int b) { return glm::length(offsets[a]) < glm::length(offsets[b]); });
+    float widestGap = 0.0f;
+    for (std::size_t i = 0; i < offsets.size(); ++i) {
+        float nearest = std::numeric_limits<float>::max();
+        for (std::size_t j = 0; j < offsets.size(); ++j) {
+            if (j != i) {
+                nearest = std::min(nearest, glm::length(offsets[i] - offsets[j]));
+            }
+        }
+        if (nearest < std::numeric_limits<float>::max()) {
+            widestGap = std::max(widestGap, nearest);
+        }
+    }
+    pattern.linkDistance = 1.5f * widestGap;
+}
+
 void precomputeFits(TapPattern& pattern) {
     const auto n = pattern.offsets.size();
     glm::dvec2 mean(0.0);
@@ -195,6 +218,7 @@ TapPattern TapPattern::make(TapLayout layout, int taps, float radius) {
         break;
     }
     precomputeFits(pattern);
+    precomputeLinks(pattern);
     return pattern;
 }
 

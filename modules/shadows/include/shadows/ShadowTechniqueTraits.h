@@ -31,10 +31,11 @@ enum class ShadowTechnique {
     JitteredPcf,  ///< PCF over a stratified jitter texture, optional early-out on a few test taps
     AdaptiveBias, ///< one comparison at the receiver's tangent plane's depth at the texel centre
     PcfAdaptiveBias, ///< the same for every PCF tap
+    PcfGsmConnected, ///< PCF over GSM, taps continuing the receiver's surface without a jump count as lit
 };
 
 /// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::PcfAdaptiveBias) + 1;
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::PcfGsmConnected) + 1;
 
 /// @brief How the lighting pass samples a technique's shadow map.
 enum class MapSampler {

@@ -31,6 +31,11 @@ struct TapPattern {
     /// Rows of the 6 x N least-squares pseudo-inverse for f(o) = a + g.o + ½ oᵀHo, coefficients ordered
     /// (a, gx, gy, Hxx, Hxy, Hyy); laid out row-major with a stride of kMaxTaps (see visibility.glsl).
     std::array<float, 6 * kMaxTaps> quadraticFitRows{};
+    /// Tap indices nearest the centre first (ties by index), for connected PCF over GSM.
+    std::vector<int> nearestFirst;
+    /// Texels within which two taps count as neighbours for connected PCF over GSM: 1.5 times the largest
+    /// distance from a tap to its nearest other tap (a grid's diagonal neighbours included).
+    float linkDistance = 0.0f;
     /// False when the taps cannot determine a quadric (e.g. all on one circle); the fit rows then carry the
     /// linear fit only (curvature rows zero).
     bool quadraticValid = false;

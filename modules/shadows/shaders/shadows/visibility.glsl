@@ -157,8 +157,9 @@ const int GS_CORRECTION_QUADRATIC = 3; // taps follow a least-squares quadric of
 const int GS_CORRECTION_NEARER = 4;
 
 // PCF over GSM: the average of the fuzzy visibilities of the taps, each compared at the receiver depth the
-// chosen correction predicts for it, or at the fragment's own where the prediction lies deeper. `pointGradient` is used by GS_CORRECTION_POINT and for the fuzzy width of
-// GS_CORRECTION_NONE; the fitted corrections use their own gradient for both.
+// chosen correction predicts for it, or at the fragment's own where the prediction lies deeper. `pointGradient`
+// is used by GS_CORRECTION_POINT and for the fuzzy width of GS_CORRECTION_NONE; the fitted corrections use
+// their own gradient for both.
 float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS], int count, float receiverDepth,
                          vec2 pointGradient, int correction, mat2 inverseCovariance,
                          const float fitRows[6 * GS_MAX_TAPS], float fuzzyScale, float minimumWidth) {
@@ -187,6 +188,59 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
         // steep gradient extrapolates past the background behind it, which then looks like an occluder.
         tapDepth = min(tapDepth, receiverDepth);
         sum += gsFuzzyVisibility(depths[i], tapDepth, magnitude, fuzzyScale, minimumWidth);
+    }
+    return gsSaturate(sum / float(max(count, 1)));
+}
+
+// How far a step between neighbouring taps may stray from the fragment's own gradient and still join one
+// surface, in multiples of that gradient's change over the step (gsPcfGsmConnectedVisibility). A crease between
+// two faces changes the slope; a shadow's edge in the map is a jump that does not scale with the step.
+const float GS_TAP_CONTINUITY = 4.0f;
+
+// PCF over GSM with connected taps (ours; docs/SHADOWS.md, "Connected taps"). A shadow's edge is a silhouette
+// seen from the light: a jump in the stored depth. A concave crease of the receiver is continuous there, only its
+// slope changes, yet the far face rises in front of any plane through the fragment and fails every comparison
+// (the darkening no gradient correction removes). So each tap is compared at the point gradient's prediction,
+// never deeper than the fragment; one that fails is lit anyway when it continues, without a jump, a tap nearer
+// the fragment within `linkDistance` texels that is attached to the fragment: it is the receiver's own surface.
+// The innermost taps (none nearer within the link distance) are attached when they pass their comparison, the
+// others only through such a chain, so a lit surface beyond a shadow's edge cannot reach into the shadow where
+// its jump is small (a receiver nearly edge-on to the light). `order` lists the taps nearest the fragment
+// first, so every tap's candidates are decided before it.
+float gsPcfGsmConnectedVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS],
+                                  const int order[GS_MAX_TAPS], int count, float linkDistance,
+                                  float receiverDepth, vec2 gradient, float fuzzyScale, float minimumWidth) {
+    float slope = length(gradient);
+    float visibility[GS_MAX_TAPS];
+    float sum = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        float tapDepth = receiverDepth + min(dot(offsets[i], gradient), 0.0f);
+        visibility[i] = gsFuzzyVisibility(depths[i], tapDepth, slope, fuzzyScale, minimumWidth);
+        sum += visibility[i];
+    }
+    if (sum >= float(count) || sum <= 0.0f) {
+        return gsSaturate(sum / float(max(count, 1))); // all pass or all fail: no tap can attach another
+    }
+    bool attached[GS_MAX_TAPS];
+    sum = 0.0f;
+    for (int k = 0; k < count; ++k) {
+        int i = order[k];
+        float reach = length(offsets[i]) - 1e-4f * linkDistance;
+        bool innermost = true;
+        bool connected = false;
+        for (int m = 0; m < k; ++m) {
+            int j = order[m];
+            vec2 step = offsets[i] - offsets[j];
+            float stepLength = length(step);
+            if (stepLength <= linkDistance && length(offsets[j]) < reach) {
+                innermost = false;
+                float deviation = abs(depths[i] - depths[j] - dot(step, gradient));
+                connected = connected ||
+                            (attached[j] && deviation <= GS_TAP_CONTINUITY * slope * stepLength + minimumWidth);
+            }
+        }
+        attached[i] = connected || (innermost && visibility[i] >= 0.5f);
+        sum += connected ? 1.0f : visibility[i];
     }
     return gsSaturate(sum / float(max(count, 1)));
 }
