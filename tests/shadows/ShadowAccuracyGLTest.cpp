@@ -47,11 +47,16 @@ bool boxOccludes(const glm::vec3& origin, const glm::vec3& toLight) {
     return crossing.enter < crossing.exit;
 }
 
+constexpr int kResolution = 1024;
+
 /// Receivers in view whose visibility the map decides: the map covers where shadows can fall, and receivers
-/// beyond it are lit without reading it, whatever the technique (counting them would dilute every rate).
+/// beyond it or in its lit border are lit without reading it, whatever the technique (counting them would
+/// dilute every rate).
 bool mapped(const ShadowMeasurement& m, const glm::vec3& p) {
-    const glm::vec4 s = m.projections.front().worldToShadow * glm::vec4(p, 1.0f);
-    return std::abs(s.x / s.w - 0.5f) <= 0.5f && std::abs(s.y / s.w - 0.5f) <= 0.5f;
+    const LightProjection& map = m.projections.front();
+    const glm::vec4 s = map.worldToShadow * glm::vec4(p, 1.0f);
+    const float inner = 0.5f - map.litBorderTexels / static_cast<float>(kResolution);
+    return std::abs(s.x / s.w - 0.5f) <= inner && std::abs(s.y / s.w - 0.5f) <= inner;
 }
 
 /// Classifies lit/shadowed receivers facing the light, inside the map, away from shadow edges by `band` world
@@ -107,16 +112,18 @@ const AccuracyCase kAccuracy[] = {
      0.0005, 0.005},
     {"pcf", ShadowTechnique::Pcf, DepthFormat::D24, 0.0f, kDefaultSteps, false, 0.0005, 0.0005, 0.005},
     {"gsm", ShadowTechnique::Gsm, DepthFormat::D24, 0.0f, kDefaultSteps, false, 0.0005, 0.0005, 0.005},
-    {"pcfGsmPoint", ShadowTechnique::PcfGsmPointGradient, DepthFormat::D24, 0.0f, kDefaultSteps, false, 0.005,
-     0.005, 0.002},
+    {"pcfGsmPoint", ShadowTechnique::PcfGsmPointGradient, DepthFormat::D24, 0.0f, kDefaultSteps, false,
+     0.0005, 0.0005, 0.0005},
     {"pcfGsmAverage", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D24, 0.0f, kDefaultSteps, false,
-     0.005, 0.005, 0.002},
+     0.0005, 0.0005, 0.0005},
     {"pcfGsmAverageD16", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D16, 0.0f, kDefaultSteps, false,
-     0.005, 0.005, 0.002},
+     0.0005, 0.0005, 0.0005},
     {"pcfGsmAverageD32F", ShadowTechnique::PcfGsmAverageGradient, DepthFormat::D32F, 0.0f, kDefaultSteps,
-     false, 0.005, 0.005, 0.002},
-    {"pcfGsmQuadratic", ShadowTechnique::PcfGsmQuadratic, DepthFormat::D24, 0.0f, kDefaultSteps, false, 0.003,
-     0.005, 0.003},
+     false, 0.0005, 0.0005, 0.0005},
+    {"pcfGsmQuadratic", ShadowTechnique::PcfGsmQuadratic, DepthFormat::D24, 0.0f, kDefaultSteps, false,
+     0.0005, 0.0005, 0.0005},
+    {"pcfGsmConnected", ShadowTechnique::PcfGsmConnected, DepthFormat::D24, 0.0f, kDefaultSteps, false,
+     0.0005, 0.0005, 0.0005},
     {"receiverPlane", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D24, 0.0f, kDefaultSteps, false,
      0.0005, 0.0005, 0.005},
     {"receiverPlaneD16", ShadowTechnique::ReceiverPlaneBias, DepthFormat::D16, 0.0f, kDefaultSteps, false,
@@ -162,14 +169,14 @@ TEST_P(ShadowAccuracyGLTest, AcneAndLeakStayUnderMeasuredThresholds) {
     settings.constantBiasTexels = c.constantBiasTexels;
     settings.depthBiasSteps = c.depthBiasSteps;
     settings.floorReceiverDepth = c.floorReceiverDepth;
-    settings.resolution = 1024;
+    settings.resolution = kResolution;
     const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
     ASSERT_GT(m.texelWorldSize, 0.0f);
     const ShadowErrors errors = measureBoxScene(m, 3.0f * m.texelWorldSize + 0.02f);
     std::cout << "[ measured ] " << c.name << ": acne " << errors.acneRate() << " of " << errors.litPixels
               << " lit, leak " << errors.leakRate() << " of " << errors.shadowedPixels
               << " shadowed, darkening " << errors.darkening() << "\n";
-    EXPECT_GT(errors.litPixels, 2000u); // the box's top and sides and the ground under its footprint: 3385
+    EXPECT_GT(errors.litPixels, 2000u); // the box's top and sides and the ground under its footprint: 2594
     EXPECT_GT(errors.shadowedPixels, 2000u);
     EXPECT_LE(errors.acneRate(), c.maxAcne);
     EXPECT_LE(errors.leakRate(), c.maxLeak);
@@ -184,7 +191,7 @@ TEST(ShadowReproductionGLTest, NaivePcfOverGsmDarkensLitSurfacesByAboutAHalf) {
     settings.technique = ShadowTechnique::PcfGsmNaive;
     settings.pcfTaps = 6;
     settings.pcfRadius = 2.5f;
-    settings.resolution = 1024;
+    settings.resolution = kResolution;
     const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
     const ShadowErrors errors = measureBoxScene(m, 4.0f * m.texelWorldSize + 0.02f);
     std::cout << "[ measured ] naive 6x6 darkening " << errors.darkening() << "\n";
@@ -218,7 +225,7 @@ TEST(ShadowFacetGLTest, BiasesFollowTheFacetNotItsSmoothedNormals) {
         }
         ShadowSettings settings;
         settings.technique = traits.technique;
-        settings.resolution = 1024;
+        settings.resolution = kResolution;
         const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
         const float band = 3.0f * m.texelWorldSize + 0.02f;
         ShadowErrors errors;
@@ -256,7 +263,7 @@ TEST(ShadowMapEdgeGLTest, TheGroundAroundTheMapsEdgeIsLit) {
         }
         ShadowSettings settings;
         settings.technique = traits.technique;
-        settings.resolution = 1024;
+        settings.resolution = kResolution;
         const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
         const float band = 3.0f * m.texelWorldSize + 0.02f;
         std::size_t nearTheEdge = 0;
@@ -333,7 +340,7 @@ public:
     double darkening(ShadowTechnique technique) {
         ShadowSettings settings;
         settings.technique = technique;
-        settings.resolution = 1024;
+        settings.resolution = kResolution;
         settings.pcfTaps = 5;
         settings.pcfRadius = 2.0f;
         const ShadowMeasurement m =
@@ -424,4 +431,20 @@ TEST(ShadowReproductionGLTest, ConcaveNeckDarkensLeastUnderTheQuadraticFit) {
     ASSERT_GT(neck.pixels(), 300u);
     EXPECT_GT(point, 0.0);
     EXPECT_LT(quadratic, 0.6 * std::min(point, average));
+}
+
+TEST(ShadowReproductionGLTest, ConnectedTapsDarkenTheConcaveNeckLessThanAnyPlane) {
+    // The neck of Fig. 4.2.5 again: it runs on without a jump in the map, so pcf-gsm-connected keeps the taps
+    // lit where every plane through the fragment fails. The quadric follows this smooth neck about as well
+    // (it cannot follow a sharp crease); both stay above single-tap gsm, whose one tap never leaves the
+    // fragment.
+    KnobNeck neck;
+    const double point = neck.darkening(ShadowTechnique::PcfGsmPointGradient);
+    const double average = neck.darkening(ShadowTechnique::PcfGsmAverageGradient);
+    const double nearer = neck.darkening(ShadowTechnique::PcfGsmNearer);
+    const double connected = neck.darkening(ShadowTechnique::PcfGsmConnected);
+    const double gsm = neck.darkening(ShadowTechnique::Gsm);
+    std::cout << "[ measured ] neck darkening: nearer " << nearer << ", connected " << connected << ", gsm "
+              << gsm << "\n";
+    EXPECT_LT(connected, 0.5 * std::min({point, average, nearer}));
 }
