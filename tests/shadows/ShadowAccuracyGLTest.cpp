@@ -199,6 +199,24 @@ TEST(ShadowReproductionGLTest, NaivePcfOverGsmDarkensLitSurfacesByAboutAHalf) {
     EXPECT_LT(errors.darkening(), 0.6);
 }
 
+namespace {
+
+/// Renders `scene` under every non-naive technique at its defaults and hands each measurement to `check`.
+template <typename Check>
+void forEachTechniqueAtItsDefaults(const engine::Scene& scene, engine::EntityId camera, Check check) {
+    for (const ShadowTechniqueTraits& traits : techniqueTable()) {
+        if (traits.naive) {
+            continue;
+        }
+        ShadowSettings settings;
+        settings.technique = traits.technique;
+        settings.resolution = kResolution;
+        check(traits, ShadowMeasurement::render(scene, camera, settings, {320, 240}));
+    }
+}
+
+} // namespace
+
 TEST(ShadowFacetGLTest, BiasesFollowTheFacetNotItsSmoothedNormals) {
     // Real models' smoothed vertex normals can lean far off their facets (up to 45° and more on the at-at
     // corpus model). Lean the box scene's normals 60° towards the light, past the camera's side of the
@@ -219,34 +237,28 @@ TEST(ShadowFacetGLTest, BiasesFollowTheFacetNotItsSmoothedNormals) {
     auto mesh = std::make_shared<engine::MeshData>(*scene.entity(ground).mesh->mesh);
     std::fill(mesh->normals.begin(), mesh->normals.end(), leaned);
     scene.entity(ground).mesh->mesh = mesh;
-    for (const ShadowTechniqueTraits& traits : techniqueTable()) {
-        if (traits.naive) {
-            continue;
-        }
-        ShadowSettings settings;
-        settings.technique = traits.technique;
-        settings.resolution = kResolution;
-        const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
-        const float band = 3.0f * m.texelWorldSize + 0.02f;
-        ShadowErrors errors;
-        for (std::size_t i = 0; i < m.visibility.size(); ++i) {
-            const glm::vec3 p(m.position[i]);
-            if (m.position[i].w < 0.5f || std::abs(p.y) > 1e-3f || !mapped(m, p)) {
-                continue; // only the ground, whose facet faces straight up
+    forEachTechniqueAtItsDefaults(
+        scene, camera, [&](const ShadowTechniqueTraits& traits, const ShadowMeasurement& m) {
+            const float band = 3.0f * m.texelWorldSize + 0.02f;
+            ShadowErrors errors;
+            for (std::size_t i = 0; i < m.visibility.size(); ++i) {
+                const glm::vec3 p(m.position[i]);
+                if (m.position[i].w < 0.5f || std::abs(p.y) > 1e-3f || !mapped(m, p)) {
+                    continue; // only the ground, whose facet faces straight up
+                }
+                const auto occluded = [&](const glm::vec3& q) { return boxOccludes(q, toLight); };
+                if (awayFromShadowEdges(p, toLight, band, occluded)) {
+                    errors.add(occluded(p), m.visibility[i]);
+                }
             }
-            const auto occluded = [&](const glm::vec3& q) { return boxOccludes(q, toLight); };
-            if (awayFromShadowEdges(p, toLight, band, occluded)) {
-                errors.add(occluded(p), m.visibility[i]);
-            }
-        }
-        std::cout << "[ measured ] " << traits.name << ": acne " << errors.acneRate() << " of "
-                  << errors.litPixels << " lit, leak " << errors.leakRate() << " of " << errors.shadowedPixels
-                  << " shadowed\n";
-        EXPECT_GT(errors.litPixels, 1000u) << traits.name;
-        EXPECT_GT(errors.shadowedPixels, 1000u) << traits.name;
-        EXPECT_LE(errors.acneRate(), 0.0005) << traits.name;
-        EXPECT_LE(errors.leakRate(), 0.0005) << traits.name;
-    }
+            std::cout << "[ measured ] " << traits.name << ": acne " << errors.acneRate() << " of "
+                      << errors.litPixels << " lit, leak " << errors.leakRate() << " of "
+                      << errors.shadowedPixels << " shadowed\n";
+            EXPECT_GT(errors.litPixels, 1000u) << traits.name;
+            EXPECT_GT(errors.shadowedPixels, 1000u) << traits.name;
+            EXPECT_LE(errors.acneRate(), 0.0005) << traits.name;
+            EXPECT_LE(errors.leakRate(), 0.0005) << traits.name;
+        });
 }
 
 TEST(ShadowMapEdgeGLTest, TheGroundAroundTheMapsEdgeIsLit) {
@@ -257,36 +269,30 @@ TEST(ShadowMapEdgeGLTest, TheGroundAroundTheMapsEdgeIsLit) {
     engine::EntityId camera = engine::kNoEntity;
     const engine::Scene scene = boxOnPlane(camera);
     const glm::vec3 toLight = -sunDirection();
-    for (const ShadowTechniqueTraits& traits : techniqueTable()) {
-        if (traits.naive) {
-            continue;
-        }
-        ShadowSettings settings;
-        settings.technique = traits.technique;
-        settings.resolution = kResolution;
-        const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {320, 240});
-        const float band = 3.0f * m.texelWorldSize + 0.02f;
-        std::size_t nearTheEdge = 0;
-        std::size_t darkened = 0;
-        for (std::size_t i = 0; i < m.visibility.size(); ++i) {
-            const glm::vec3 p(m.position[i]);
-            if (m.position[i].w < 0.5f || std::abs(p.y) > 1e-3f || boxOccludes(p, toLight) ||
-                !awayFromShadowEdges(p, toLight, band,
-                                     [&](const glm::vec3& q) { return boxOccludes(q, toLight); })) {
-                continue;
+    forEachTechniqueAtItsDefaults(
+        scene, camera, [&](const ShadowTechniqueTraits& traits, const ShadowMeasurement& m) {
+            const float band = 3.0f * m.texelWorldSize + 0.02f;
+            std::size_t nearTheEdge = 0;
+            std::size_t darkened = 0;
+            for (std::size_t i = 0; i < m.visibility.size(); ++i) {
+                const glm::vec3 p(m.position[i]);
+                if (m.position[i].w < 0.5f || std::abs(p.y) > 1e-3f || boxOccludes(p, toLight) ||
+                    !awayFromShadowEdges(p, toLight, band,
+                                         [&](const glm::vec3& q) { return boxOccludes(q, toLight); })) {
+                    continue;
+                }
+                const glm::vec4 s = m.projections.front().worldToShadow * glm::vec4(p, 1.0f);
+                const float fromCentre = std::max(std::abs(s.x / s.w - 0.5f), std::abs(s.y / s.w - 0.5f));
+                if (std::abs(fromCentre - 0.5f) * 1024.0f <= 10.0f) {
+                    ++nearTheEdge; // within 10 texels of the map's edge, inside or out
+                    darkened += m.visibility[i] < 0.99f;
+                }
             }
-            const glm::vec4 s = m.projections.front().worldToShadow * glm::vec4(p, 1.0f);
-            const float fromCentre = std::max(std::abs(s.x / s.w - 0.5f), std::abs(s.y / s.w - 0.5f));
-            if (std::abs(fromCentre - 0.5f) * 1024.0f <= 10.0f) {
-                ++nearTheEdge; // within 10 texels of the map's edge, inside or out
-                darkened += m.visibility[i] < 0.99f;
-            }
-        }
-        std::cout << "[ measured ] " << traits.name << ": " << darkened << " of " << nearTheEdge
-                  << " lit ground pixels near the map's edge darkened\n";
-        EXPECT_GT(nearTheEdge, 500u) << traits.name;
-        EXPECT_EQ(darkened, 0u) << traits.name;
-    }
+            std::cout << "[ measured ] " << traits.name << ": " << darkened << " of " << nearTheEdge
+                      << " lit ground pixels near the map's edge darkened\n";
+            EXPECT_GT(nearTheEdge, 500u) << traits.name;
+            EXPECT_EQ(darkened, 0u) << traits.name;
+        });
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, ShadowAccuracyGLTest, testing::ValuesIn(kAccuracy),
