@@ -179,8 +179,8 @@ TEST(GroundTruthTest, ASmoothedNormalThroughItsFacetDoesNotShadowItsOwnPoint) {
     GroundSamples s = groundGrid(4.0f, 20);
     for (std::size_t i = 0; i < s.positions.size(); ++i) {
         s.normals[i] = glm::normalize(glm::vec3(0.0f, -0.5f, -1.0f));
-        ASSERT_GT(glm::dot(s.normals[i], viewer - s.positions[i]),
-                  0.0f); // it faces the viewer, like the G-buffer's
+        // It faces the viewer, like the G-buffer's.
+        ASSERT_GT(glm::dot(s.normals[i], viewer - s.positions[i]), 0.0f);
     }
     std::vector<float> visibility(s.positions.size());
     tracer.hardVisibility(s.positions, s.normals, s.covered, sun({0.1f, -1.0f, 0.2f}), visibility);
