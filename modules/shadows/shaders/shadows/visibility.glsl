@@ -79,10 +79,12 @@ vec2 gsReceiverPlaneGradient(vec2 duvdx, vec2 duvdy, float dzdx, float dzdy) {
     return vec2(duvdy.y * dzdx - duvdx.y * dzdy, duvdx.x * dzdy - duvdy.x * dzdx) / det;
 }
 
-// The depth a PCF tap should be compared at: the receiver plane followed from the fragment to the tap
-// (GSM multisampling reference, "Merging the Algorithms", Figure 4.2.4b).
-float gsTapReceiverDepth(float receiverDepth, vec2 offset, vec2 gradient) {
-    return receiverDepth + dot(offset, gradient);
+// A tap's predicted depth change from the fragment, kept from going deeper: only what lies nearer the light
+// than the fragment can occlude it (the bias reference's min(0, bias) clamp, "Applications"). Downhill
+// predictions add nothing but risk: beyond the receiver's own silhouette in the map (a convex limb) a steep
+// gradient extrapolates past the background behind it, which then looks like an occluder.
+float gsNoDeeperThanFragment(float rise) {
+    return min(rise, 0.0f);
 }
 
 // Average gradient by least squares over the taps' own depths (GSM multisampling reference, "Optimizing Texture
@@ -174,19 +176,17 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
         correction == GS_CORRECTION_NEARER ? max(length(gradient), length(pointGradient)) : length(gradient);
     float sum = 0.0f;
     for (int i = 0; i < count; ++i) {
-        float tapDepth = receiverDepth;
+        // The receiver plane followed from the fragment to the tap (GSM multisampling reference, "Merging the
+        // Algorithms", Figure 4.2.4b), or the fitted surface.
+        float rise = 0.0f;
         if (correction == GS_CORRECTION_QUADRATIC) {
-            tapDepth += gsQuadraticRise(offsets[i], gradient, curvature);
+            rise = gsQuadraticRise(offsets[i], gradient, curvature);
         } else if (correction == GS_CORRECTION_NEARER) {
-            tapDepth += min(dot(offsets[i], gradient), dot(offsets[i], pointGradient));
+            rise = min(dot(offsets[i], gradient), dot(offsets[i], pointGradient));
         } else if (correction != GS_CORRECTION_NONE) {
-            tapDepth = gsTapReceiverDepth(receiverDepth, offsets[i], gradient);
+            rise = dot(offsets[i], gradient);
         }
-        // Only what lies nearer the light than the fragment can occlude it, so a tap is never compared deeper
-        // than the fragment's own depth (the bias reference's min(0, bias) clamp, "Applications"). Downhill
-        // predictions add nothing but risk: beyond the receiver's own silhouette in the map (a convex limb) a
-        // steep gradient extrapolates past the background behind it, which then looks like an occluder.
-        tapDepth = min(tapDepth, receiverDepth);
+        float tapDepth = receiverDepth + gsNoDeeperThanFragment(rise);
         sum += gsFuzzyVisibility(depths[i], tapDepth, magnitude, fuzzyScale, minimumWidth);
     }
     return gsSaturate(sum / float(max(count, 1)));
@@ -214,7 +214,7 @@ float gsPcfGsmConnectedVisibility(const float depths[GS_MAX_TAPS], const vec2 of
     float visibility[GS_MAX_TAPS];
     float sum = 0.0f;
     for (int i = 0; i < count; ++i) {
-        float tapDepth = receiverDepth + min(dot(offsets[i], gradient), 0.0f);
+        float tapDepth = receiverDepth + gsNoDeeperThanFragment(dot(offsets[i], gradient));
         visibility[i] = gsFuzzyVisibility(depths[i], tapDepth, slope, fuzzyScale, minimumWidth);
         sum += visibility[i];
     }
@@ -247,10 +247,10 @@ float gsPcfGsmConnectedVisibility(const float depths[GS_MAX_TAPS], const vec2 of
 
 // Receiver-plane bias for one texel of a 2x2 bilinear footprint (bias reference, "Applications"):
 // the surface depth extrapolated from the fragment to the texel's centre, `toTexelCentre` texels away;
-// with `clampToLit`, the bias may only move the receiver towards the light (min(0, bias)).
+// with `clampToLit`, the bias may only move the receiver towards the light.
 float gsReceiverPlaneTapDepth(float receiverDepth, vec2 toTexelCentre, vec2 gradient, bool clampToLit) {
     float bias = dot(toTexelCentre, gradient);
-    return receiverDepth + (clampToLit ? min(0.0f, bias) : bias);
+    return receiverDepth + (clampToLit ? gsNoDeeperThanFragment(bias) : bias);
 }
 
 // Bilinear blend of four comparisons laid out as textureGather returns them: x (-,+), y (+,+), z (+,-), w (-,-)

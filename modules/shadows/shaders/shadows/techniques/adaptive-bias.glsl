@@ -2,8 +2,8 @@
 // comparison at the depth the receiver's tangent plane has on the light's ray through the centre of the texel
 // compared, lowered by the depth bias (depthBiasSteps steps of the format: the paper's epsilon from the depth
 // precision). With the tap pattern, the same for every PCF tap (Ehm et al., WSCG 2015), but never deeper than
-// the fragment's own depth: only what is nearer the light can occlude the fragment (as PCF over GSM does,
-// visibility.glsl), and a tangent plane extrapolated downhill past a crease or limb meets other surfaces.
+// the fragment's own depth (gsNoDeeperThanFragment): a tangent plane extrapolated downhill past a crease or limb
+// meets other surfaces.
 #if defined(GS_SHADOW_ADAPTIVE) || defined(GS_SHADOW_ADAPTIVE_PCF)
 GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
     int slot = lookup.slot;
@@ -22,7 +22,7 @@ GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
 #endif
         float rise = dot(centre - lookup.texel, lookup.tangentGradient);
 #ifdef GS_SHADOW_ADAPTIVE_PCF
-        rise = min(rise, 0.0);
+        rise = gsNoDeeperThanFragment(rise);
 #endif
         float reference = lookup.depth + rise;
         sum += gsShadowCompare(slot, centre * gsShadowTexel[slot].y, gsShadowReference(reference));
