@@ -189,6 +189,21 @@ TEST(GroundTruthTest, ASmoothedNormalThroughItsFacetDoesNotShadowItsOwnPoint) {
     }
 }
 
+TEST(GroundTruthTest, FacetNormalIsTheTrianglesOnTheViewersSide) {
+    engine::Scene scene;
+    testsupport::addGround(scene, 20.0f);
+    RayTracedVisibility tracer(scene);
+    const glm::vec3 leaning = glm::normalize(glm::vec3(0.3f, 1.0f, 0.0f));
+    EXPECT_EQ(tracer.facetNormal({1, 0, 1}, leaning), leaning); // no viewer yet: the normal given
+    tracer.setViewer({0.0f, 3.0f, -20.0f});
+    const glm::vec3 above = tracer.facetNormal({1, 0, 1}, leaning);
+    EXPECT_NEAR(above.y, 1.0f, 1e-6f);
+    tracer.setViewer({0.0f, -3.0f, -20.0f});
+    const glm::vec3 below = tracer.facetNormal({1, 0, 1}, leaning);
+    EXPECT_NEAR(below.y, -1.0f, 1e-6f);
+    EXPECT_EQ(tracer.facetNormal({30, 0, 1}, leaning), leaning); // off the ground: no triangle there
+}
+
 TEST(GroundTruthTest, SoftVisibilityIsTheUnblockedFractionOfTheDisk) {
     engine::Scene scene;
     const auto wall = scene.create("half-plane");
@@ -207,14 +222,44 @@ TEST(GroundTruthTest, SoftVisibilityIsTheUnblockedFractionOfTheDisk) {
     EXPECT_EQ(visibility[2], 1.0f); // beyond the blocker's edge at x = -2
 }
 
+/// Pixel positions of a `size` image laid on the ground y = 0, one world unit apart, rows along z.
+std::vector<glm::vec3> groundPixels(glm::ivec2 size) {
+    std::vector<glm::vec3> positions;
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            positions.emplace_back(static_cast<float>(x), 0.0f, static_cast<float>(y));
+        }
+    }
+    return positions;
+}
+
+/// Classes of the pixels of a `width`x1 strip on the ground, lit left of `edge` and shadowed from it on,
+/// under a sun travelling along `direction` with shadow texels of `texel` world units.
+std::vector<PixelClass> stripClasses(int width, int edge, glm::vec3 direction, float texel,
+                                     float bandTexels) {
+    const glm::ivec2 size(width, 1);
+    std::vector<float> truth(static_cast<std::size_t>(width), 1.0f);
+    std::fill(truth.begin() + edge, truth.end(), 0.0f);
+    const std::vector<Surface> surfaces(truth.size(), Surface::Receiver);
+    const std::vector<glm::vec3> positions = groundPixels(size);
+    const std::vector<float> texels(truth.size(), texel);
+    LightPlane plane{positions, texels};
+    plane.direction = glm::normalize(direction);
+    return classify(size, truth, surfaces, plane, bandTexels);
+}
+
 TEST(ShadowMetricsTest, ClassesAndRatesOnASyntheticImage) {
     // 8x1 strip: truth lit on the left half, shadowed on the right; pixel 0 is background.
     const glm::ivec2 size(8, 1);
     const std::vector<float> truth{1, 1, 1, 1, 0, 0, 0, 0};
-    const std::vector<std::uint8_t> receiver{0, 1, 1, 1, 1, 1, 1, 1};
+    const std::vector<Surface> surfaces{Surface::None,     Surface::Receiver, Surface::Receiver,
+                                        Surface::Receiver, Surface::Receiver, Surface::Receiver,
+                                        Surface::Receiver, Surface::Receiver};
     const std::vector<float> visibility{0.0f, 0.2f, 1.0f, 1.0f, 0.0f, 0.0f, 0.9f, 0.0f};
     const std::vector<std::uint8_t> concave{0, 1, 1, 0, 0, 0, 0, 0};
-    const auto classes = classify(size, truth, receiver, 1);
+    const std::vector<glm::vec3> positions = groundPixels(size);
+    const std::vector<float> texels(8, 1.0f);
+    const auto classes = classify(size, truth, surfaces, LightPlane{positions, texels}, 1.0f);
     EXPECT_EQ(classes, (std::vector<PixelClass>{PixelClass::Ignored, PixelClass::Lit, PixelClass::Lit,
                                                 PixelClass::Band, PixelClass::Band, PixelClass::Shadowed,
                                                 PixelClass::Shadowed, PixelClass::Shadowed}));
@@ -234,22 +279,76 @@ TEST(ShadowMetricsTest, ClassesAndRatesOnASyntheticImage) {
     EXPECT_NEAR(m.rootMeanSquareError, std::sqrt((0.64 + 0.81) / 7.0), 1e-6);
 }
 
-TEST(ShadowMetricsTest, BandCoversAWindowAroundEdgesInTwoDimensions) {
+TEST(ShadowMetricsTest, BandIsADiskOfTexelsAroundAnEdgeUnderAnOverheadSun) {
     const glm::ivec2 size(7, 7);
     std::vector<float> truth(49, 1.0f);
     truth[3 * 7 + 3] = 0.0f; // one shadowed pixel in the middle
-    const std::vector<std::uint8_t> receiver(49, 1);
-    const auto classes = classify(size, truth, receiver, 2);
+    const std::vector<Surface> surfaces(49, Surface::Receiver);
+    const std::vector<glm::vec3> positions = groundPixels(size);
+    const std::vector<float> texels(49, 1.0f);
+    const auto classes = classify(size, truth, surfaces, LightPlane{positions, texels}, 2.0f);
     std::size_t band = 0;
     for (int y = 0; y < 7; ++y) {
         for (int x = 0; x < 7; ++x) {
-            const bool near = std::abs(x - 3) <= 2 && std::abs(y - 3) <= 2;
+            const bool near = (x - 3) * (x - 3) + (y - 3) * (y - 3) <= 4;
             EXPECT_EQ(classes[static_cast<std::size_t>(y * 7 + x)] == PixelClass::Band, near)
                 << x << "," << y;
             band += near;
         }
     }
-    EXPECT_EQ(band, 25u);
+    EXPECT_EQ(band, 13u);
+}
+
+TEST(ShadowMetricsTest, BandSpreadsAcrossAReceiverTheLightGrazes) {
+    // A sun 10° above the ground, shining along the strip: one texel across its rays covers 1/sin 10° = 5.8
+    // pixels of ground, so two texels reach 11 pixels either side of the edge at 20.
+    const float elevation = glm::radians(10.0f);
+    const auto grazing = stripClasses(40, 20, {std::cos(elevation), -std::sin(elevation), 0.0f}, 1.0f, 2.0f);
+    for (int x = 0; x < 40; ++x) {
+        EXPECT_EQ(grazing[static_cast<std::size_t>(x)] == PixelClass::Band, x >= 9 && x <= 30) << x;
+    }
+    // The same sun shining across the strip sees the ground's pixels a texel apart.
+    const auto across = stripClasses(40, 20, {0.0f, -std::sin(elevation), std::cos(elevation)}, 1.0f, 2.0f);
+    for (int x = 0; x < 40; ++x) {
+        EXPECT_EQ(across[static_cast<std::size_t>(x)] == PixelClass::Band, x >= 18 && x <= 21) << x;
+    }
+}
+
+TEST(ShadowMetricsTest, AnEdgesNeighboursAreInTheBandHoweverFineTheMap) {
+    const auto fine = stripClasses(10, 5, {0.0f, -1.0f, 0.0f}, 0.01f, 2.0f);
+    for (int x = 0; x < 10; ++x) {
+        EXPECT_EQ(fine[static_cast<std::size_t>(x)] == PixelClass::Band, x == 4 || x == 5) << x;
+    }
+}
+
+TEST(ShadowMetricsTest, ALitReceiverMeetingASurfaceFacingAwayIsAtAnEdgeOfTheLight) {
+    // 11x1 strip: lit receivers, a surface facing away from the light (a convex corner's far face), then
+    // truly shadowed receivers. Only the lit side of the corner is at an edge: both sides of the other are
+    // dark.
+    const glm::ivec2 size(11, 1);
+    const std::vector<float> truth{1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0};
+    std::vector<Surface> surfaces(11, Surface::Receiver);
+    surfaces[4] = surfaces[5] = surfaces[6] = Surface::FacingAway;
+    const std::vector<glm::vec3> positions = groundPixels(size);
+    const std::vector<float> texels(11, 1.0f);
+    const auto classes = classify(size, truth, surfaces, LightPlane{positions, texels}, 2.0f);
+    EXPECT_EQ(classes,
+              (std::vector<PixelClass>{PixelClass::Lit, PixelClass::Lit, PixelClass::Band, PixelClass::Band,
+                                       PixelClass::Ignored, PixelClass::Ignored, PixelClass::Ignored,
+                                       PixelClass::Shadowed, PixelClass::Shadowed, PixelClass::Shadowed,
+                                       PixelClass::Shadowed}));
+}
+
+TEST(ShadowMetricsTest, APointLightMeasuresAcrossItsRaysAtTheReceiversDistance) {
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 5, 0}, {0, 20, 0}};
+    const std::vector<float> texels{0.5f, 0.5f, 0.5f, 0.0f};
+    LightPlane lamp{positions, texels};
+    lamp.directional = false;
+    lamp.position = {0, 10, 0};
+    EXPECT_FLOAT_EQ(lamp.texelsBetween(0, 1), 2.0f);   // one unit off the ray at the same distance
+    EXPECT_FLOAT_EQ(lamp.texelsBetween(0, 2), 4.0f);   // one unit off it halfway: two at the receiver
+    EXPECT_TRUE(std::isinf(lamp.texelsBetween(0, 3))); // behind the lamp
+    EXPECT_TRUE(std::isinf(lamp.texelsBetween(3, 0))); // no map holds the pixel
 }
 
 TEST(ShadowMetricsTest, ConcaveMaskFindsTheInsideOfACylinder) {

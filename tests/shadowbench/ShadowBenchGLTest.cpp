@@ -30,20 +30,8 @@ struct Limit {
 /// Techniques that miss the floor somewhere on the content scenes: their measured worst with margin.
 const std::map<ShadowTechnique, Limit>& exceptions() {
     static const std::map<ShadowTechnique, Limit> limits = {
-        {ShadowTechnique::HardwarePcf, {0.0007, 0.0016, 0.005}},
-        {ShadowTechnique::Pcf, {0.0023, 0.0088, 0.005}},
-        {ShadowTechnique::PcfGsmPointGradient, {0.00095, 0.0005, 0.005}},
-        {ShadowTechnique::PcfGsmAverageGradient, {0.0012, 0.0005, 0.005}},
-        {ShadowTechnique::PcfGsmQuadratic, {0.0015, 0.0005, 0.0061}},
-        {ShadowTechnique::PcfGsmNearer, {0.00084, 0.0005, 0.005}},
-        {ShadowTechnique::ReceiverPlaneBias, {0.00065, 0.0005, 0.005}},
-        {ShadowTechnique::Vsm, {0.0011, 0.0005, 0.005}},
-        {ShadowTechnique::Msm, {0.0007, 0.0005, 0.022}},
-        {ShadowTechnique::Evsm, {0.0011, 0.0005, 0.011}},
-        {ShadowTechnique::JitteredPcf, {0.0026, 0.01, 0.005}},
-        {ShadowTechnique::AdaptiveBias, {0.0015, 0.0005, 0.005}},
-        {ShadowTechnique::PcfAdaptiveBias, {0.0034, 0.0005, 0.014}},
-        {ShadowTechnique::PcfGsmConnected, {0.0005, 0.0007, 0.005}},
+        {ShadowTechnique::JitteredPcf, {0.0005, 0.00065, 0.005}},
+        {ShadowTechnique::PcfGsmConnected, {0.0005, 0.00065, 0.005}},
     };
     return limits;
 }
@@ -139,15 +127,8 @@ namespace {
 /// lights: the floor, or the measured worst with margin where a technique misses it there.
 Limit everyLightLimit(const std::string& scene, ShadowTechnique technique) {
     static const std::map<std::pair<std::string, ShadowTechnique>, Limit> limits = {
-        {{"room", ShadowTechnique::Vsm}, {0.0005, 0.00066, 0.0059}},
-        {{"room", ShadowTechnique::Msm}, {0.0005, 0.00066, 0.0052}},
-        {{"room", ShadowTechnique::Evsm}, {0.00048, 0.00053, 0.0069}},
-        {{"outdoor", ShadowTechnique::SlopeScaledBias}, {0.006, 0.0005, 0.006}},
-        {{"outdoor", ShadowTechnique::PcfGsmQuadratic}, {0.00098, 0.0005, 0.005}},
-        {{"outdoor", ShadowTechnique::AdaptiveBias}, {0.00079, 0.0005, 0.005}},
-        {{"outdoor", ShadowTechnique::Vsm}, {0.0005, 0.00083, 0.005}},
-        {{"outdoor", ShadowTechnique::Msm}, {0.0005, 0.0011, 0.005}},
-        {{"outdoor", ShadowTechnique::Evsm}, {0.0005, 0.00083, 0.005}},
+        {{"outdoor", ShadowTechnique::PcfGsmAverageGradient}, {0.00095, 0.0005, 0.005}},
+        {{"outdoor", ShadowTechnique::JitteredPcf}, {0.001, 0.0005, 0.005}},
     };
     const auto found = limits.find({scene, technique});
     return found == limits.end() ? Limit{} : found->second;

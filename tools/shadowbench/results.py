@@ -98,9 +98,13 @@ out.append(f"- Timing: {meta['timingMethod']}; median over timed frames after on
            "(`shadow` = the module's pre-pass, `lighting` = the forward pass)")
 out.append(f"- Ground truth: {meta['groundTruth']} visibility ray-traced with Embree 3 from a G-buffer of the same "
            "refined geometry")
-out.append(f"- Images {meta['width']}x{meta['height']}; acne = truly lit receivers with visibility < 0.5, "
-           "leak = truly shadowed receivers with visibility > 0.5, both outside a band of "
-           f"{meta['bandTexels']} shadow texels around true shadow edges; darkening = mean (1 - V) over truly lit "
+out.append(f"- Images {meta['width']}x{meta['height']}; receivers = pixels facing the light by both their smoothed "
+           "normal and their facet (where the two disagree, at a smoothed mesh's terminator, the facets shadow "
+           "themselves); acne = truly lit receivers with visibility < 0.5, "
+           "leak = truly shadowed receivers with visibility > 0.5, both outside a band around true shadow edges: "
+           f"within {meta['bandTexels']} shadow texels of a receiver of the other truth, measured across the "
+           "light's rays as the map sees them (a receiver the light grazes spreads a texel over many pixels), or "
+           "next to one; darkening = mean (1 - V) over truly lit "
            "receivers; MAE over every receiver; edges: distances in pixels from each true shadow-edge pixel to the "
            "nearest rendered one and back, mean / 95th percentile. ★ marks the Pareto front (no configuration is both faster and "
            "more accurate).\n")

@@ -128,20 +128,29 @@ void RayTracedVisibility::castShadowRays(std::span<const glm::vec3> origins,
     }
 }
 
-glm::vec3 RayTracedVisibility::rayOrigin(const glm::vec3& position, const glm::vec3& normal,
-                                         float offset) const {
+float RayTracedVisibility::rayOffset(const glm::vec3& position) const {
+    const float sceneOffset = 1e-4f * sceneSize_;
     if (!viewer_) {
-        return position + offset * normal;
+        return sceneOffset;
+    }
+    const glm::vec3 magnitude = glm::abs(position);
+    return std::max(std::min(sceneOffset, 1e-4f * glm::length(position - *viewer_)),
+                    1e-5f * std::max({magnitude.x, magnitude.y, magnitude.z}));
+}
+
+glm::vec3 RayTracedVisibility::facetNormal(const glm::vec3& position, const glm::vec3& normal) const {
+    if (!viewer_) {
+        return normal;
     }
     // The triangle under the point: a short segment along the line of sight through it, starting a few
     // offsets in front (nothing nearer the viewer lies there, or it would have been seen instead).
     const glm::vec3 sight = position - *viewer_;
     const float distance = glm::length(sight);
     if (!(distance > 0.0f)) {
-        return position + offset * normal;
+        return normal;
     }
     const glm::vec3 along = sight / distance;
-    const float reach = 4.0f * offset;
+    const float reach = 4.0f * rayOffset(position);
     RTCRayHit hit{};
     hit.ray.org_x = position.x - reach * along.x;
     hit.ray.org_y = position.y - reach * along.y;
@@ -159,10 +168,9 @@ glm::vec3 RayTracedVisibility::rayOrigin(const glm::vec3& position, const glm::v
     const glm::vec3 facet(hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z);
     const float facetLength = glm::length(facet);
     if (hit.hit.geomID == RTC_INVALID_GEOMETRY_ID || !(facetLength > 0.0f)) {
-        return position + offset * normal;
+        return normal;
     }
-    const glm::vec3 towardsViewer = glm::dot(facet, along) > 0.0f ? -facet : facet;
-    return position + (offset / facetLength) * towardsViewer;
+    return (glm::dot(facet, along) > 0.0f ? -facet : facet) / facetLength;
 }
 
 void RayTracedVisibility::hardVisibility(std::span<const glm::vec3> positions,
@@ -177,7 +185,6 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                                          std::span<const std::uint8_t> covered,
                                          const engine::FrameLight& light, float radius, int samplesPerAxis,
                                          std::span<float> visibility) const {
-    const float sceneOffset = 1e-4f * sceneSize_;
     const int samples = std::max(samplesPerAxis, 1);
     std::vector<glm::vec3> origins;
     std::vector<glm::vec3> directions;
@@ -188,12 +195,8 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
         if (!covered[i]) {
             continue;
         }
-        const glm::vec3 magnitude = glm::abs(positions[i]);
-        const float offset =
-            viewer_ ? std::max(std::min(sceneOffset, 1e-4f * glm::length(positions[i] - *viewer_)),
-                               1e-5f * std::max({magnitude.x, magnitude.y, magnitude.z}))
-                    : sceneOffset;
-        const glm::vec3 origin = rayOrigin(positions[i], normals[i], offset);
+        const glm::vec3 origin =
+            positions[i] + rayOffset(positions[i]) * facetNormal(positions[i], normals[i]);
         glm::vec3 direction;
         float length = 0.0f;
         towardsLight(light, positions[i], direction, length);

@@ -53,23 +53,14 @@ PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine
     return summarise(times);
 }
 
-double median(std::vector<float> values) {
-    if (values.empty()) {
-        return 0.0;
-    }
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
-                     values.end());
-    return values[values.size() / 2];
-}
-
-/// The world size of a shadow texel at each receiver: the finest of `maps` that holds it (orthographic: the
-/// map's texel; perspective: its texel scale times the distance along its axis).
+/// The world size of a shadow texel at each receiver pixel, 0 elsewhere: the finest of `maps` that holds it
+/// (orthographic: the map's texel; perspective: its texel scale times the distance along its axis).
 std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
-                                      const std::vector<std::uint8_t>& receivers,
+                                      const std::vector<Surface>& surfaces,
                                       const std::vector<shadows::LightProjection>& maps) {
-    std::vector<float> sizes;
+    std::vector<float> sizes(positions.size(), 0.0f);
     for (std::size_t i = 0; i < positions.size(); ++i) {
-        if (!receivers[i]) {
+        if (surfaces[i] != Surface::Receiver) {
             continue;
         }
         float finest = std::numeric_limits<float>::max();
@@ -84,7 +75,7 @@ std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
             }
         }
         if (finest < std::numeric_limits<float>::max()) {
-            sizes.push_back(finest);
+            sizes[i] = finest;
         }
     }
     return sizes;
@@ -116,23 +107,26 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
         normals_.emplace_back(normals[i]);
         covered[i] = positions[i].w > 0.5f;
     }
-    receivers_.resize(positions.size());
-    std::vector<float> pixelSizes;
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-        // A sun shines along its direction; spot and point lights from their position.
-        const glm::vec3 toLight = light_.light.type == engine::LightType::Directional
-                                      ? -light_.direction
-                                      : glm::normalize(light_.position - positions_[i]);
-        receivers_[i] = covered[i] && glm::dot(normals_[i], toLight) > 0.05f;
-        if (covered[i] && (i + 1) % static_cast<std::size_t>(options.size.x) != 0 && covered[i + 1]) {
-            pixelSizes.push_back(glm::length(positions_[i + 1] - positions_[i]));
-        }
-    }
-    pixelWorldSize_ = static_cast<float>(median(pixelSizes));
     concave_ = concaveMask(options.size, positions_, normals_, covered, 0.5f);
 
     RayTracedVisibility tracer(scene_);
     tracer.setViewer(glm::vec3(scene_.worldMatrix(camera_)[3]));
+    // Receivers face the light by their smoothed normal, which lights them, and by their facet, which the
+    // truth's rays leave from: where the two disagree (the terminator of a smoothed mesh) the surface's own
+    // facets shadow it, an attached shadow whose edge is neither's to place.
+    surfaces_.resize(positions.size(), Surface::None);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        if (!covered[i]) {
+            continue;
+        }
+        // A sun shines along its direction; spot and point lights from their position.
+        const glm::vec3 toLight = light_.light.type == engine::LightType::Directional
+                                      ? -light_.direction
+                                      : glm::normalize(light_.position - positions_[i]);
+        const bool facing = glm::dot(normals_[i], toLight) > 0.05f &&
+                            glm::dot(tracer.facetNormal(positions_[i], normals_[i]), toLight) > 0.05f;
+        surfaces_[i] = facing ? Surface::Receiver : Surface::FacingAway;
+    }
     truth_.resize(positions.size());
     if (options.softSamplesPerAxis > 0) {
         tracer.softVisibility(positions_, normals_, covered, light_, options.softRadius,
@@ -197,7 +191,6 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
 
     const Accuracy accuracy = measure(scene, config.settings);
     result.metrics = accuracy.metrics;
-    result.bandPixels = accuracy.bandPixels;
     engine::writePng(folder / (config.label + "-classes.png"),
                      classificationImage(options_.size, accuracy.classes, accuracy.visibility));
     engine::writePng(folder / (config.label + "-error.png"),
@@ -248,20 +241,15 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
     for (std::size_t i = 0; i < pixels.size(); ++i) {
         visibility[i] = pixels[i].x;
     }
-    // The band is a number of shadow texels; convert to pixels with the median texel and pixel footprints. A
-    // receiver's texel is that of the finest map holding it (a light's cascades and cube faces differ).
-    const float texelWorld = static_cast<float>(median(
-        receiverTexelSizes(scene.positions_, scene.receivers_, module.lightProjections(scene.light_.index))));
-    const int bandPixels = scene.pixelWorldSize_ > 0.0f
-                               ? std::clamp(static_cast<int>(std::ceil(options_.bandTexels * texelWorld /
-                                                                       scene.pixelWorldSize_)),
-                                            1, 32)
-                               : 1;
-    return measureVisibility(scene, std::move(visibility), bandPixels);
+    // The band is measured in the texels of the finest map holding each receiver (a light's cascades and cube
+    // faces differ).
+    return measureVisibility(
+        scene, std::move(visibility),
+        receiverTexelSizes(scene.positions_, scene.surfaces_, module.lightProjections(scene.light_.index)));
 }
 
 Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<float> visibility,
-                                        int bandPixels) const {
+                                        std::vector<float> texelSizes) const {
     if (visibility.size() != scene.truth_.size()) {
         throw engine::Error("shadowbench: a visibility image of " + std::to_string(visibility.size()) +
                             " pixels for scene '" + scene.name() + "' of " +
@@ -270,8 +258,14 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     Accuracy accuracy;
     accuracy.truth = scene.truth_;
     accuracy.visibility = std::move(visibility);
-    accuracy.bandPixels = bandPixels;
-    accuracy.classes = classify(options_.size, scene.truth_, scene.receivers_, accuracy.bandPixels);
+    accuracy.texelSizes = std::move(texelSizes);
+    LightPlane plane;
+    plane.positions = scene.positions_;
+    plane.texelSizes = accuracy.texelSizes;
+    plane.directional = scene.light_.light.type == engine::LightType::Directional;
+    plane.direction = scene.light_.direction;
+    plane.position = scene.light_.position;
+    accuracy.classes = classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandTexels);
     accuracy.metrics = computeMetrics(accuracy.classes, scene.truth_, accuracy.visibility, scene.concave_);
     accuracy.metrics.edges =
         edgePlacement(options_.size, accuracy.classes, scene.truth_, accuracy.visibility);
@@ -296,7 +290,8 @@ SceneCost ShadowBench::measureCost(const BenchScene& scene) const {
     return cost;
 }
 
-BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run, int bandPixels) const {
+BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
+                                    std::vector<float> texelSizes) const {
     BenchResult result;
     result.scene = scene.name();
     result.config.label = "osg-" + run.technique;
@@ -308,13 +303,12 @@ BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
     std::vector<float> visibility = run.visibility;
     for (std::size_t i = 0; i < visibility.size(); ++i) {
         if (visibility[i] < 0.0f) {
-            result.peerUnlitReceivers += scene.receivers_[i] != 0;
+            result.peerUnlitReceivers += scene.surfaces_[i] == Surface::Receiver;
             visibility[i] = 1.0f;
         }
     }
-    const Accuracy accuracy = measureVisibility(scene, std::move(visibility), bandPixels);
+    const Accuracy accuracy = measureVisibility(scene, std::move(visibility), std::move(texelSizes));
     result.metrics = accuracy.metrics;
-    result.bandPixels = accuracy.bandPixels;
     const std::filesystem::path folder = options_.imageFolder / scene.name();
     engine::writePng(folder / (result.config.label + "-classes.png"),
                      classificationImage(options_.size, accuracy.classes, accuracy.visibility));
@@ -356,7 +350,7 @@ shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, 
 std::string resultsCsv(const std::vector<BenchResult>& results) {
     std::ostringstream csv;
     csv << "scene,label,technique,layout,taps,radius,resolution,format,acne_rate,leak_rate,darkening,"
-           "concave_darkening,mae,rmse,receivers,lit,shadowed,band,concave,band_pixels,shadow_ms_median,"
+           "concave_darkening,mae,rmse,receivers,lit,shadowed,band,concave,shadow_ms_median,"
            "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
            "full_kernel_fraction,frame_ms_median,peer,edge_true_to_rendered_mean,edge_true_to_rendered_p95,"
            "edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,rendered_edge_pixels,"
@@ -369,14 +363,13 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << ',' << shadows::toString(s.depthFormat) << ',' << m.acneRate << ',' << m.leakRate << ','
             << m.darkening << ',' << m.concaveDarkening << ',' << m.meanAbsoluteError << ','
             << m.rootMeanSquareError << ',' << m.receivers << ',' << m.lit << ',' << m.shadowed << ','
-            << m.band << ',' << m.concave << ',' << r.bandPixels << ',' << r.shadowPass.median << ','
-            << r.shadowPass.min << ',' << r.shadowPass.max << ',' << r.lightingPass.median << ','
-            << r.lightingPass.min << ',' << r.lightingPass.max << ',' << r.shadowBytes << ','
-            << r.fullKernelFraction << ',' << r.frame.median << ',' << r.peerClass << ','
-            << m.edges.trueToRendered.mean << ',' << m.edges.trueToRendered.percentile95 << ','
-            << m.edges.renderedToTrue.mean << ',' << m.edges.renderedToTrue.percentile95 << ','
-            << m.edges.trueToRendered.count << ',' << m.edges.renderedToTrue.count << ',' << r.shimmer
-            << '\n';
+            << m.band << ',' << m.concave << ',' << r.shadowPass.median << ',' << r.shadowPass.min << ','
+            << r.shadowPass.max << ',' << r.lightingPass.median << ',' << r.lightingPass.min << ','
+            << r.lightingPass.max << ',' << r.shadowBytes << ',' << r.fullKernelFraction << ','
+            << r.frame.median << ',' << r.peerClass << ',' << m.edges.trueToRendered.mean << ','
+            << m.edges.trueToRendered.percentile95 << ',' << m.edges.renderedToTrue.mean << ','
+            << m.edges.renderedToTrue.percentile95 << ',' << m.edges.trueToRendered.count << ','
+            << m.edges.renderedToTrue.count << ',' << r.shimmer << '\n';
     }
     return csv.str();
 }
@@ -424,7 +417,6 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                 {{"pixels", m.edges.renderedToTrue.count},
                  {"mean", m.edges.renderedToTrue.mean},
                  {"p95", m.edges.renderedToTrue.percentile95}}}}},
-             {"bandPixels", r.bandPixels},
              {"shadowPassMs",
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
              {"lightingPassMs",

@@ -112,51 +112,98 @@ EdgeDistances distancesFrom(glm::ivec2 size, const std::vector<std::uint8_t>& fr
 }
 } // namespace
 
+float LightPlane::texelsBetween(std::size_t i, std::size_t j) const {
+    const float texel = texelSizes[i];
+    if (!(texel > 0.0f)) {
+        return std::numeric_limits<float>::infinity();
+    }
+    if (directional) {
+        const glm::vec3 offset = positions[j] - positions[i];
+        return glm::length(offset - glm::dot(offset, direction) * direction) / texel;
+    }
+    // Both points seen from the light: j's offset from i's ray, scaled back to i's distance.
+    const glm::vec3 toI = positions[i] - position;
+    const float distance = glm::length(toI);
+    if (!(distance > 0.0f)) {
+        return std::numeric_limits<float>::infinity();
+    }
+    const glm::vec3 ray = toI / distance;
+    const glm::vec3 toJ = positions[j] - position;
+    const float along = glm::dot(toJ, ray);
+    if (!(along > 0.0f)) {
+        return std::numeric_limits<float>::infinity();
+    }
+    return glm::length(toJ - along * ray) * (distance / along) / texel;
+}
+
 std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
-                                 std::span<const std::uint8_t> receiver, int bandRadius) {
+                                 std::span<const Surface> surfaces, const LightPlane& plane, float bandTexels,
+                                 int windowPixels) {
     const std::size_t count = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
-    // Distance to the nearest receiver of each truth, as a square-window test done separably: first the
-    // nearest lit/shadowed receiver along each row, then down the columns.
+    const auto lit = [&](std::size_t j) { return surfaces[j] == Surface::Receiver && truth[j] >= 0.5f; };
+    const auto dark = [&](std::size_t j) {
+        return surfaces[j] == Surface::FacingAway || (surfaces[j] == Surface::Receiver && truth[j] < 0.5f);
+    };
+    // Which pixels have a lit and a dark one anywhere in their window (a square-window test done separably:
+    // first along each row, then down the columns); only those are searched pixel by pixel.
     std::vector<std::uint8_t> nearLit(count, 0);
-    std::vector<std::uint8_t> nearShadowed(count, 0);
+    std::vector<std::uint8_t> nearDark(count, 0);
     std::vector<std::uint8_t> rowLit(count, 0);
-    std::vector<std::uint8_t> rowShadowed(count, 0);
+    std::vector<std::uint8_t> rowDark(count, 0);
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
-            for (int dx = -bandRadius; dx <= bandRadius; ++dx) {
-                const int nx = x + dx;
-                if (nx < 0 || nx >= size.x) {
-                    continue;
-                }
+            for (int nx = std::max(x - windowPixels, 0); nx <= std::min(x + windowPixels, size.x - 1); ++nx) {
                 const std::size_t j = indexOf(size, nx, y);
-                if (receiver[j]) {
-                    (truth[j] >= 0.5f ? rowLit : rowShadowed)[indexOf(size, x, y)] = 1;
-                }
+                rowLit[indexOf(size, x, y)] |= static_cast<std::uint8_t>(lit(j));
+                rowDark[indexOf(size, x, y)] |= static_cast<std::uint8_t>(dark(j));
             }
         }
     }
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
-            for (int dy = -bandRadius; dy <= bandRadius; ++dy) {
+            for (int ny = std::max(y - windowPixels, 0); ny <= std::min(y + windowPixels, size.y - 1); ++ny) {
+                nearLit[indexOf(size, x, y)] |= rowLit[indexOf(size, x, ny)];
+                nearDark[indexOf(size, x, y)] |= rowDark[indexOf(size, x, ny)];
+            }
+        }
+    }
+    // Whether a pixel of the other truth lies within the band of receiver (x, y): rings outwards, so that
+    // most band pixels stop at their first ring.
+    const auto inBand = [&](int x, int y) {
+        const std::size_t i = indexOf(size, x, y);
+        const bool iLit = lit(i);
+        for (int ring = 1; ring <= windowPixels; ++ring) {
+            for (int dy = -ring; dy <= ring; ++dy) {
                 const int ny = y + dy;
                 if (ny < 0 || ny >= size.y) {
                     continue;
                 }
-                const std::size_t j = indexOf(size, x, ny);
-                nearLit[indexOf(size, x, y)] |= rowLit[j];
-                nearShadowed[indexOf(size, x, y)] |= rowShadowed[j];
+                const bool edgeRow = dy == -ring || dy == ring;
+                for (int dx = -ring; dx <= ring; dx += edgeRow ? 1 : 2 * ring) {
+                    const int nx = x + dx;
+                    if (nx < 0 || nx >= size.x) {
+                        continue;
+                    }
+                    const std::size_t j = indexOf(size, nx, ny);
+                    if ((iLit ? dark(j) : lit(j)) && (ring == 1 || plane.texelsBetween(i, j) <= bandTexels)) {
+                        return true;
+                    }
+                }
             }
         }
-    }
+        return false;
+    };
     std::vector<PixelClass> classes(count, PixelClass::Ignored);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (!receiver[i]) {
-            continue;
-        }
-        if (nearLit[i] && nearShadowed[i]) {
-            classes[i] = PixelClass::Band;
-        } else {
-            classes[i] = truth[i] >= 0.5f ? PixelClass::Lit : PixelClass::Shadowed;
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = indexOf(size, x, y);
+            if (surfaces[i] != Surface::Receiver) {
+                continue;
+            }
+            const bool candidate = nearLit[i] && nearDark[i];
+            classes[i] = candidate && inBand(x, y) ? PixelClass::Band
+                         : lit(i)                  ? PixelClass::Lit
+                                                   : PixelClass::Shadowed;
         }
     }
     return classes;

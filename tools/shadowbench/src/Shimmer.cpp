@@ -42,8 +42,8 @@ double ShadowBench::measureShimmer(const BenchScene& scene, const shadows::Shado
         }
         std::vector<float> pixels = target.readPixelsFloat();
         if (!previous.empty()) {
-            for (std::size_t i = 0; i < scene.receivers_.size(); ++i) {
-                if (scene.receivers_[i]) {
+            for (std::size_t i = 0; i < scene.surfaces_.size(); ++i) {
+                if (scene.surfaces_[i] == Surface::Receiver) {
                     changes += std::abs(pixels[4 * i] - previous[4 * i]) > 0.5f;
                     ++compared;
                 }

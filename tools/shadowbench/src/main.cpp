@@ -320,8 +320,9 @@ int main(int argc, char** argv) {
             }
             shadowbench::SceneCost cost = bench.measureCost(*scene);
             if (options.peerFolder) {
-                // Our boundary band at the peer's map size, measured once per size rather than once per run.
-                std::map<int, int> bandPixelsAtMapSize;
+                // The band's unit, our texel at each receiver at the peer's map size, measured once per size
+                // rather than once per run.
+                std::map<int, std::vector<float>> texelSizesAtMapSize;
                 for (const std::string& technique :
                      shadowbench::peerRunNames(*options.peerFolder, scene->name())) {
                     const auto run = shadowbench::loadPeerRun(*options.peerFolder, scene->name(), technique,
@@ -331,15 +332,15 @@ int main(int argc, char** argv) {
                                   << options.peerFolder->string() << "\n";
                         continue;
                     }
-                    auto band = bandPixelsAtMapSize.find(run->mapSize);
-                    if (band == bandPixelsAtMapSize.end()) {
+                    auto texels = texelSizesAtMapSize.find(run->mapSize);
+                    if (texels == texelSizesAtMapSize.end()) {
                         shadows::ShadowSettings ours;
                         ours.resolution = run->mapSize;
-                        band =
-                            bandPixelsAtMapSize.emplace(run->mapSize, bench.measure(*scene, ours).bandPixels)
+                        texels =
+                            texelSizesAtMapSize.emplace(run->mapSize, bench.measure(*scene, ours).texelSizes)
                                 .first;
                     }
-                    results.push_back(bench.peerResult(*scene, *run, band->second));
+                    results.push_back(bench.peerResult(*scene, *run, texels->second));
                     if (technique == "vdsm") {
                         cost.peerUnshadowedFrame = run->unshadowed;
                     }

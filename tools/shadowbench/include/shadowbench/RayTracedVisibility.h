@@ -48,9 +48,13 @@ public:
     /// @brief Diagonal of the scene's bounding box (world units).
     [[nodiscard]] float sceneSize() const { return sceneSize_; }
 
+    /// @brief The geometric normal of the triangle seen at `position`, on the viewer's side, once setViewer
+    /// names where the pixels are seen from; `normal` before, or where no triangle lies there.
+    [[nodiscard]] glm::vec3 facetNormal(const glm::vec3& position, const glm::vec3& normal) const;
+
 private:
-    /// Where each shadow ray starts: `positions[i]` moved `offset` off the surface (see hardVisibility).
-    [[nodiscard]] glm::vec3 rayOrigin(const glm::vec3& position, const glm::vec3& normal, float offset) const;
+    /// How far a shadow ray from `position` starts off the surface (see hardVisibility).
+    [[nodiscard]] float rayOffset(const glm::vec3& position) const;
 
     /// Casts one ray per entry of `directions`/`lengths` from `origins`, writing 1 for free and 0 for
     /// blocked.

@@ -50,7 +50,6 @@ struct BenchResult {
     std::size_t shadowBytes = 0;
     /// Shadow maps drawn (cascades and cube faces count one each); 0 for peer rows.
     int shadowMaps = 0;
-    int bandPixels = 0;
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
     /// candidates); negative for every other configuration.
     double fullKernelFraction = -1.0;
@@ -84,7 +83,9 @@ struct Accuracy {
     std::vector<PixelClass> classes;
     std::vector<float> visibility;
     std::vector<float> truth;
-    int bandPixels = 0;
+    /// World size of a shadow texel at each receiver pixel (0: no map holds it), which the band is measured
+    /// in.
+    std::vector<float> texelSizes;
 };
 
 /// @brief Options of a benchmark run.
@@ -126,10 +127,9 @@ private:
     engine::FrameLight light_;
     std::vector<glm::vec3> positions_;
     std::vector<glm::vec3> normals_;
-    std::vector<std::uint8_t> receivers_;
+    std::vector<Surface> surfaces_;
     std::vector<std::uint8_t> concave_;
     std::vector<float> truth_;
-    float pixelWorldSize_ = 0.0f;
 };
 
 /// @brief Runs configurations on prepared scenes: accuracy against ground truth and per-pass timing.
@@ -153,10 +153,10 @@ public:
     /// @brief Accuracy of `settings` against the scene's ground truth (no timing, nothing written).
     [[nodiscard]] Accuracy measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const;
 
-    /// @brief Accuracy of a visibility image made elsewhere (rows top to bottom, the scene's size), with a
-    /// boundary band of `bandPixels`.
+    /// @brief Accuracy of a visibility image made elsewhere (rows top to bottom, the scene's size), with the
+    /// boundary band measured in `texelSizes` (Accuracy::texelSizes).
     [[nodiscard]] Accuracy measureVisibility(const BenchScene& scene, std::vector<float> visibility,
-                                             int bandPixels) const;
+                                             std::vector<float> texelSizes) const;
 
     /// @brief Shimmer of `settings` on `scene`: the maps are fitted to a view that starts at the camera and
     /// moves a third of the light's first map texel per frame (options().shimmerFrames frames, along a fixed
@@ -170,8 +170,9 @@ public:
     [[nodiscard]] SceneCost measureCost(const BenchScene& scene) const;
 
     /// @brief A row for an OpenSceneGraph peer run: its accuracy against this scene's truth and its frame
-    /// times; images written like ours. `bandPixels` should be ours at the same map size.
-    BenchResult peerResult(const BenchScene& scene, const struct PeerRun& run, int bandPixels) const;
+    /// times; images written like ours. `texelSizes` should be ours at the same map size (the band's unit).
+    BenchResult peerResult(const BenchScene& scene, const struct PeerRun& run,
+                           std::vector<float> texelSizes) const;
 
     [[nodiscard]] engine::TimingMethod timingMethod() const { return method_; }
     [[nodiscard]] const BenchOptions& options() const { return options_; }

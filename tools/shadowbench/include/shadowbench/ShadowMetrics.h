@@ -12,10 +12,18 @@ namespace shadowbench {
 
 /// @brief What each receiver pixel is in the ground truth.
 enum class PixelClass : std::uint8_t {
-    Ignored,  ///< background or a surface facing away from the light
+    Ignored,  ///< background, or a surface facing away from the light by its smoothed normal or its facet
     Band,     ///< within the boundary band around a true shadow edge (not scored for acne/leak)
     Lit,      ///< truly lit, outside the band
     Shadowed, ///< truly shadowed by another surface, outside the band
+};
+
+/// @brief What a pixel shows, for scoring.
+enum class Surface : std::uint8_t {
+    None,       ///< background
+    Receiver,   ///< faces the light by its smoothed normal and by its facet: scored
+    FacingAway, ///< faces away from the light by either: dark whatever the shadows, an edge of the light
+                ///< where it meets a lit receiver (a convex corner, a terminator)
 };
 
 /// @brief Distances in pixels from each edge pixel of one image to the nearest edge pixel of another.
@@ -54,10 +62,32 @@ struct ShadowMetrics {
     EdgePlacement edges;
 };
 
-/// @brief Per-pixel classes: receivers are `receiver[i] != 0`; a receiver is in the band when a receiver with
-/// the other truth lies within `bandRadius` pixels (square window; the truth is thresholded at 0.5).
+/// @brief Where each pixel lies across the light's rays, so that the boundary band can be measured in shadow
+/// texels, as the map sees the receivers: a surface almost edge-on to the light spreads one texel over many
+/// pixels, and no map of that resolution can place an edge within it.
+struct LightPlane {
+    /// World position of each pixel (the G-buffer's).
+    std::span<const glm::vec3> positions;
+    /// World size of a shadow texel at each pixel (of the finest map holding it); 0 where no map holds it.
+    std::span<const float> texelSizes;
+    /// A sun: `direction` is where its light travels. Otherwise a spot or point light at `position`.
+    bool directional = true;
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};
+    glm::vec3 position{0.0f};
+
+    /// @brief How far pixel `j` lies from pixel `i` across the light's rays, in shadow texels at `i`: the
+    /// distance between the two rays (a spot or point light's: at `i`'s distance from it); infinite when `i`
+    /// has no texel size or `j` lies behind the light.
+    [[nodiscard]] float texelsBetween(std::size_t i, std::size_t j) const;
+};
+
+/// @brief Per-pixel classes of the receivers (`surfaces`); a receiver is in the band when a pixel of the
+/// other truth (a receiver's truth thresholded at 0.5; a surface facing away is dark) is one of its 8
+/// neighbours, or lies within `bandTexels` shadow texels of it across the light's rays (`plane`) and within
+/// `windowPixels` pixels of it on screen (the search's reach).
 std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
-                                 std::span<const std::uint8_t> receiver, int bandRadius);
+                                 std::span<const Surface> surfaces, const LightPlane& plane, float bandTexels,
+                                 int windowPixels = 32);
 
 /// @brief Errors of `visibility` against `truth` over `classes`:
 /// acne rate = lit pixels with visibility < 0.5 / lit pixels; leak rate = shadowed pixels with visibility >
