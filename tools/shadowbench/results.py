@@ -104,7 +104,8 @@ out.append(f"- Images {meta['width']}x{meta['height']}; receivers = pixels facin
            "leak = truly shadowed receivers with visibility > 0.5, both outside a band around true shadow edges: "
            f"within {meta['bandTexels']} shadow texels of a receiver of the other truth, measured across the "
            "light's rays as the map sees them (a receiver the light grazes spreads a texel over many pixels), or "
-           "next to one; darkening = mean (1 - V) over truly lit "
+           "next to one (surfaces facing away from the light count as dark: a lit face meeting one is at an edge of the "
+           "light); darkening = mean (1 - V) over truly lit "
            "receivers; MAE over every receiver; edges: distances in pixels from each true shadow-edge pixel to the "
            "nearest rendered one and back, mean / 95th percentile. ★ marks the Pareto front (no configuration is both faster and "
            "more accurate).\n")
