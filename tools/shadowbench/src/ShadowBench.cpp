@@ -265,7 +265,11 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     plane.directional = scene.light_.light.type == engine::LightType::Directional;
     plane.direction = scene.light_.direction;
     plane.position = scene.light_.position;
-    accuracy.classes = classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandTexels);
+    if (scene.classes_.empty() || scene.classifiedTexelSizes_ != accuracy.texelSizes) {
+        scene.classes_ = classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandTexels);
+        scene.classifiedTexelSizes_ = accuracy.texelSizes;
+    }
+    accuracy.classes = scene.classes_;
     accuracy.metrics = computeMetrics(accuracy.classes, scene.truth_, accuracy.visibility, scene.concave_);
     accuracy.metrics.edges =
         edgePlacement(options_.size, accuracy.classes, scene.truth_, accuracy.visibility);

@@ -130,6 +130,10 @@ private:
     std::vector<Surface> surfaces_;
     std::vector<std::uint8_t> concave_;
     std::vector<float> truth_;
+    // The classes depend on the truth and the maps' texel sizes only: configurations with the same map layout
+    // (every technique at its defaults) share one classification.
+    mutable std::vector<float> classifiedTexelSizes_;
+    mutable std::vector<PixelClass> classes_;
 };
 
 /// @brief Runs configurations on prepared scenes: accuracy against ground truth and per-pass timing.
