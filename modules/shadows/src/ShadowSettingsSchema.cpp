@@ -137,10 +137,9 @@ const std::vector<SettingRow>& rows() {
          "Only let the bias move receivers towards the light.", BoolSetting{&S::receiverPlaneClamp},
          only<T::ReceiverPlaneBias>},
         {"normalOffsetTexels", "texels", "normal offset margin",
-         "Margin beyond the kernel's footprint: the receiver is pushed along its normal by (footprint + "
-         "this) "
-         "texel sizes times the sine of its angle to the light, which clears a plane over the footprint at "
-         "any angle (docs/SHADOWS.md, \"Automatic bias\").",
+         "Margin beyond the comparison's footprint: the receiver is pushed along its normal by "
+         "(footprint + this) texel sizes times the sine of its angle to the light, which clears a plane "
+         "over the footprint at any angle (docs/SHADOWS.md, \"Automatic bias\").",
          FloatSetting{&S::normalOffsetTexels, {.max = 16.0f}, 0.0f, 8.0f, "%.2f"}, offsetsAlongNormal},
         {"depthBiasSteps", "depth steps", "depth bias",
          "Comparison depth lowered by this many steps of the depth format, but steps no finer than 2^-18 "

@@ -11,7 +11,8 @@ using S = MapSampler;
 
 // Footprints of the hardware comparisons (ShadowTechniqueTraits::footprintTexels). A NEAREST comparison reads
 // the texel its lookup falls in, whose centre (where the caster's depth was rasterised) is up to half a texel
-// diagonal away; a LINEAR one blends the four texel centres around it, up to a diagonal away.
+// diagonal away; a LINEAR one blends the four texel centres around it, up to a diagonal away. PCF's taps each
+// follow the receiver's plane (pcf.glsl), so each needs only its own comparison's reach, not the kernel's.
 constexpr float kNearestReach = 0.70710678f;
 constexpr float kBilinearReach = 1.41421356f;
 
@@ -20,18 +21,6 @@ float nearestReach(const ShadowSettings&) {
 }
 float bilinearReach(const ShadowSettings&) {
     return kBilinearReach;
-}
-// The pattern's farthest tap (TapPattern.h): a grid's corner, or the radius (Poisson points lie inside it,
-// circular-8's on it). From the layout alone, so settings that validate() is about to refuse cannot throw
-// here.
-float patternReach(const ShadowSettings& settings) {
-    const float farthest =
-        settings.pcfLayout == TapLayout::Grid ? settings.pcfRadius * kBilinearReach : settings.pcfRadius;
-    return farthest + kNearestReach;
-}
-// Jittered offsets fill the square [-pcfRadius, pcfRadius]² (TapPattern.h, makeJitterTexels).
-float jitterReach(const ShadowSettings& settings) {
-    return settings.pcfRadius * kBilinearReach + kNearestReach;
 }
 
 glm::vec2 evsmExponents(const ShadowSettings& settings) {
@@ -61,11 +50,12 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .biasesDepth = true},
     {.technique = T::Pcf,
      .name = "pcf",
-     .summary = "N-tap PCF: grid 2×2..8×8 or Poisson 8..64, optional per-pixel rotation",
+     .summary = "N-tap PCF: grid 2×2..8×8 or Poisson 8..64, optional per-pixel rotation; each tap compared "
+                "at the receiver's tangent plane, never deeper than the fragment",
      .reference = "Reeves et al. 1987",
-     .defines = {"GS_SHADOW_PCF"},
+     .defines = {"GS_SHADOW_PCF", "GS_SHADOW_TANGENT_PLANE"},
      .usesTapPattern = true,
-     .footprintTexels = patternReach,
+     .footprintTexels = nearestReach,
      .biasesDepth = true},
     {.technique = T::Gsm,
      .name = "gsm",
@@ -182,13 +172,15 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .chebyshevBound = true},
     {.technique = T::JitteredPcf,
      .name = "pcf-jittered",
-     .summary = "`jitterTaps` (8..64) offsets from a stratified 32×32×(taps/2) jitter texture, two offsets "
-                "per RGBA16 texel; `earlyOutTestTaps` test taps first, the full kernel only where they "
-                "disagree, averaging every tap taken",
+     .summary =
+         "`jitterTaps` (8..64) offsets from a stratified 32×32×(taps/2) jitter texture, two offsets "
+         "per RGBA16 texel; `earlyOutTestTaps` test taps first, the full kernel only where they "
+         "disagree, averaging every tap taken; each tap compared at the receiver's tangent plane, never "
+         "deeper than the fragment",
      .reference = "soft shadows reference (whose pseudo-code normalises by the full count even when it stops "
                   "early — we do not)",
-     .defines = {"GS_SHADOW_JITTERED"},
-     .footprintTexels = jitterReach,
+     .defines = {"GS_SHADOW_JITTERED", "GS_SHADOW_TANGENT_PLANE"},
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .jittered = true},
     {.technique = T::AdaptiveBias,

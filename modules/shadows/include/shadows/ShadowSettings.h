@@ -94,7 +94,7 @@ struct ShadowSettings {
     ReceiverPlaneKernel receiverPlaneKernel = ReceiverPlaneKernel::Bilinear2x2;
     /// Clamps the receiver-plane bias to min(0, bias).
     bool receiverPlaneClamp = true;
-    /// Margin beyond the kernel's footprint of the normal offset, texel sizes.
+    /// Margin beyond the comparison's footprint of the normal offset, texel sizes.
     float normalOffsetTexels = 0.0f;
     /// Floors the receiver depth to the format's step before comparing.
     bool floorReceiverDepth = false;

@@ -245,11 +245,11 @@ float gsPcfGsmConnectedVisibility(const float depths[GS_MAX_TAPS], const vec2 of
     return gsSaturate(sum / float(max(count, 1)));
 }
 
-// Receiver-plane bias for one texel of a 2x2 bilinear footprint (bias reference, "Applications"):
-// the surface depth extrapolated from the fragment to the texel's centre, `toTexelCentre` texels away;
+// Receiver-plane bias for one comparison (bias reference, "Applications"): the surface depth extrapolated from
+// the fragment along its plane (`gradient`, depth per texel) to a texel's centre or tap `toTap` texels away;
 // with `clampToLit`, the bias may only move the receiver towards the light.
-float gsReceiverPlaneTapDepth(float receiverDepth, vec2 toTexelCentre, vec2 gradient, bool clampToLit) {
-    float bias = dot(toTexelCentre, gradient);
+float gsReceiverPlaneTapDepth(float receiverDepth, vec2 toTap, vec2 gradient, bool clampToLit) {
+    float bias = dot(toTap, gradient);
     return receiverDepth + (clampToLit ? gsNoDeeperThanFragment(bias) : bias);
 }
 

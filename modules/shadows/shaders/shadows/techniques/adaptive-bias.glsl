@@ -17,14 +17,13 @@ GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
     for (int i = 0; i < count; ++i) {
 #ifdef GS_SHADOW_ADAPTIVE_PCF
         vec2 centre = floor(lookup.texel + rotation * gsTapOffsets[i]) + 0.5;
+        bool clampToLit = true;
 #else
         vec2 centre = floor(lookup.texel) + 0.5;
+        bool clampToLit = false;
 #endif
-        float rise = dot(centre - lookup.texel, lookup.tangentGradient);
-#ifdef GS_SHADOW_ADAPTIVE_PCF
-        rise = gsNoDeeperThanFragment(rise);
-#endif
-        float reference = lookup.depth + rise;
+        float reference =
+            gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, lookup.tangentGradient, clampToLit);
         sum += gsShadowCompare(slot, centre * gsShadowTexel[slot].y, gsShadowReference(reference));
     }
     return GsShadowSample(sum / float(max(count, 1)), 1.0, 0.0, lookup.tangentGradient, false);
