@@ -222,6 +222,20 @@ TEST(GroundTruthTest, SoftVisibilityIsTheUnblockedFractionOfTheDisk) {
     EXPECT_EQ(visibility[2], 1.0f); // beyond the blocker's edge at x = -2
 }
 
+TEST(GroundTruthTest, LightWithinFindsTheLightPastTheShadowsEdgeAcrossTheRays) {
+    // Under an overhead sun a unit ball 2 above the ground shadows a unit disk: its edge lies 1 from the
+    // point under the centre and 0.2 from a point 0.8 out, measured across the rays.
+    const glm::vec3 centre(0.5f, 2.0f, -0.5f);
+    const RayTracedVisibility tracer(ballOverGround(centre));
+    const std::vector<glm::vec3> positions{
+        {0.5f, 0, -0.5f}, {0.5f, 0, -0.5f}, {1.3f, 0, -0.5f}, {1.3f, 0, -0.5f}, {0.5f, 0, -0.5f}};
+    const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
+    const std::vector<float> reach{0.9f, 1.1f, 0.1f, 0.3f, 0.0f};
+    std::vector<std::uint8_t> reached(positions.size(), 7);
+    tracer.lightWithin(positions, normals, reach, sun({0, -1, 0}), reached);
+    EXPECT_EQ(reached, (std::vector<std::uint8_t>{0, 1, 0, 1, 0}));
+}
+
 /// Pixel positions of a `size` image laid on the ground y = 0, one world unit apart, rows along z.
 std::vector<glm::vec3> groundPixels(glm::ivec2 size) {
     std::vector<glm::vec3> positions;
@@ -337,6 +351,22 @@ TEST(ShadowMetricsTest, ALitReceiverMeetingASurfaceFacingAwayIsAtAnEdgeOfTheLigh
                                        PixelClass::Ignored, PixelClass::Ignored, PixelClass::Ignored,
                                        PixelClass::Shadowed, PixelClass::Shadowed, PixelClass::Shadowed,
                                        PixelClass::Shadowed}));
+}
+
+TEST(ShadowMetricsTest, ADarkReceiverTheLightReachesWithinTheBandIsInTheBand) {
+    // Where the light reaches near a shadowed receiver off the image (its lit side hidden from the camera, or
+    // a caster narrower than the band), the receiver is in the band; a lit receiver is unaffected.
+    const glm::ivec2 size(6, 1);
+    const std::vector<float> truth{0, 0, 0, 1, 1, 1};
+    const std::vector<Surface> surfaces(6, Surface::Receiver);
+    const std::vector<glm::vec3> positions = groundPixels(size);
+    const std::vector<float> texels(6, 0.01f);
+    const std::vector<std::uint8_t> lightWithinBand{1, 0, 0, 0, 0, 1};
+    LightPlane plane{positions, texels};
+    plane.lightWithinBand = lightWithinBand;
+    EXPECT_EQ(classify(size, truth, surfaces, plane, 2.0f),
+              (std::vector<PixelClass>{PixelClass::Band, PixelClass::Shadowed, PixelClass::Band,
+                                       PixelClass::Band, PixelClass::Lit, PixelClass::Lit}));
 }
 
 TEST(ShadowMetricsTest, APointLightMeasuresAcrossItsRaysAtTheReceiversDistance) {

@@ -180,6 +180,54 @@ void RayTracedVisibility::hardVisibility(std::span<const glm::vec3> positions,
     softVisibility(positions, normals, covered, light, 0.0f, 1, visibility);
 }
 
+void RayTracedVisibility::lightWithin(std::span<const glm::vec3> positions,
+                                      std::span<const glm::vec3> normals, std::span<const float> reach,
+                                      const engine::FrameLight& light,
+                                      std::span<std::uint8_t> reached) const {
+    constexpr int kDirections = 8;
+    std::vector<glm::vec3> origins;
+    std::vector<glm::vec3> directions;
+    std::vector<float> lengths;
+    std::vector<std::size_t> pixelOf;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        reached[i] = 0;
+        if (!(reach[i] > 0.0f)) {
+            continue;
+        }
+        const glm::vec3 onSurface =
+            positions[i] + rayOffset(positions[i]) * facetNormal(positions[i], normals[i]);
+        glm::vec3 towards;
+        float length = 0.0f;
+        towardsLight(light, positions[i], towards, length);
+        glm::vec3 u;
+        glm::vec3 v;
+        basisAround(towards, u, v);
+        for (const float distance : {0.5f * reach[i], reach[i]}) {
+            for (int k = 0; k < kDirections; ++k) {
+                const float angle =
+                    glm::two_pi<float>() * static_cast<float>(k) / static_cast<float>(kDirections);
+                const glm::vec3 origin = onSurface + distance * (std::cos(angle) * u + std::sin(angle) * v);
+                glm::vec3 direction = towards;
+                float segment = length;
+                if (!std::isinf(length)) {
+                    const glm::vec3 toLight = light.position - origin;
+                    segment = glm::length(toLight);
+                    direction = segment > 0.0f ? toLight / segment : towards;
+                }
+                origins.push_back(origin);
+                directions.push_back(direction);
+                lengths.push_back(std::isinf(segment) ? segment : segment * 0.9999f);
+                pixelOf.push_back(i);
+            }
+        }
+    }
+    std::vector<float> free(origins.size());
+    castShadowRays(origins, directions, lengths, free);
+    for (std::size_t ray = 0; ray < free.size(); ++ray) {
+        reached[pixelOf[ray]] |= static_cast<std::uint8_t>(free[ray] > 0.5f);
+    }
+}
+
 void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                                          std::span<const glm::vec3> normals,
                                          std::span<const std::uint8_t> covered,

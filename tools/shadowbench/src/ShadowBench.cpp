@@ -109,7 +109,8 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
     }
     concave_ = concaveMask(options.size, positions_, normals_, covered, 0.5f);
 
-    RayTracedVisibility tracer(scene_);
+    tracer_ = std::make_unique<RayTracedVisibility>(scene_);
+    RayTracedVisibility& tracer = *tracer_;
     tracer.setViewer(glm::vec3(scene_.worldMatrix(camera_)[3]));
     // Receivers face the light by their smoothed normal, which lights them, and by their facet, which the
     // truth's rays leave from: where the two disagree (the terminator of a smoothed mesh) the surface's own
@@ -266,6 +267,15 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     plane.direction = scene.light_.direction;
     plane.position = scene.light_.position;
     if (scene.classes_.empty() || scene.classifiedTexelSizes_ != accuracy.texelSizes) {
+        std::vector<float> reach(scene.truth_.size(), 0.0f);
+        for (std::size_t i = 0; i < reach.size(); ++i) {
+            if (scene.surfaces_[i] == Surface::Receiver && scene.truth_[i] < 0.5f) {
+                reach[i] = options_.bandTexels * accuracy.texelSizes[i];
+            }
+        }
+        std::vector<std::uint8_t> lightWithinBand(reach.size());
+        scene.tracer_->lightWithin(scene.positions_, scene.normals_, reach, scene.light_, lightWithinBand);
+        plane.lightWithinBand = lightWithinBand;
         scene.classes_ = classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandTexels);
         scene.classifiedTexelSizes_ = accuracy.texelSizes;
     }

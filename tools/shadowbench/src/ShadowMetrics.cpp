@@ -201,9 +201,10 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
                 continue;
             }
             const bool candidate = nearLit[i] && nearDark[i];
-            classes[i] = candidate && inBand(x, y) ? PixelClass::Band
-                         : lit(i)                  ? PixelClass::Lit
-                                                   : PixelClass::Shadowed;
+            const bool lightNearby = !lit(i) && !plane.lightWithinBand.empty() && plane.lightWithinBand[i];
+            classes[i] = lightNearby || (candidate && inBand(x, y)) ? PixelClass::Band
+                         : lit(i)                                   ? PixelClass::Lit
+                                                                    : PixelClass::Shadowed;
         }
     }
     return classes;

@@ -42,6 +42,15 @@ public:
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light, float radius,
                         int samplesPerAxis, std::span<float> visibility) const;
 
+    /// @brief Whether the light reaches near each point with `reach[i] > 0`, across its rays: 1 where one of
+    /// 16 hard shadow rays, started `reach[i]` or half of it from the point in 8 directions perpendicular to
+    /// its ray to the light (offset off the surface as in hardVisibility), is free. A shadowed point so
+    /// marked lies within `reach[i]` of its shadow's edge in the light's view, or under a caster narrower
+    /// than that, even where the lit side is hidden from the camera. Rays started under the surface meet it
+    /// and count as blocked.
+    void lightWithin(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                     std::span<const float> reach, const engine::FrameLight& light,
+                     std::span<std::uint8_t> reached) const;
     /// @brief Sizes the ray offsets by the distance from `eye` (see hardVisibility).
     void setViewer(const glm::vec3& eye) { viewer_ = eye; }
 

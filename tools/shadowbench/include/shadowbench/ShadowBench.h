@@ -130,6 +130,8 @@ private:
     std::vector<Surface> surfaces_;
     std::vector<std::uint8_t> concave_;
     std::vector<float> truth_;
+    // Kept for the band: where the light reaches near a shadowed receiver depends on the maps' texel sizes.
+    std::unique_ptr<RayTracedVisibility> tracer_;
     // The classes depend on the truth and the maps' texel sizes only: configurations with the same map layout
     // (every technique at its defaults) share one classification.
     mutable std::vector<float> classifiedTexelSizes_;
