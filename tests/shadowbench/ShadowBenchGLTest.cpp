@@ -30,7 +30,6 @@ struct Limit {
 /// Techniques that miss the floor somewhere on the content scenes: their measured worst with margin.
 const std::map<ShadowTechnique, Limit>& exceptions() {
     static const std::map<ShadowTechnique, Limit> limits = {
-        {ShadowTechnique::JitteredPcf, {0.0005, 0.00065, 0.005}},
         {ShadowTechnique::PcfGsmConnected, {0.0005, 0.00065, 0.005}},
     };
     return limits;
@@ -128,7 +127,6 @@ namespace {
 Limit everyLightLimit(const std::string& scene, ShadowTechnique technique) {
     static const std::map<std::pair<std::string, ShadowTechnique>, Limit> limits = {
         {{"outdoor", ShadowTechnique::PcfGsmAverageGradient}, {0.00095, 0.0005, 0.005}},
-        {{"outdoor", ShadowTechnique::JitteredPcf}, {0.001, 0.0005, 0.005}},
     };
     const auto found = limits.find({scene, technique});
     return found == limits.end() ? Limit{} : found->second;
