@@ -12,7 +12,9 @@ using S = MapSampler;
 // Footprints of the hardware comparisons (ShadowTechniqueTraits::footprintTexels). A NEAREST comparison reads
 // the texel its lookup falls in, whose centre (where the caster's depth was rasterised) is up to half a texel
 // diagonal away; a LINEAR one blends the four texel centres around it, up to a diagonal away. PCF's taps each
-// follow the receiver's plane (pcf.glsl), so each needs only its own comparison's reach, not the kernel's.
+// follow the receiver's plane (pcf.glsl), so the offset need not reach the kernel's farthest tap: a diagonal
+// (more than one NEAREST comparison's reach) met the floor in the most views (docs/SHADOWS.md, "Automatic
+// bias").
 constexpr float kNearestReach = 0.70710678f;
 constexpr float kBilinearReach = 1.41421356f;
 
@@ -55,7 +57,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "Reeves et al. 1987",
      .defines = {"GS_SHADOW_PCF", "GS_SHADOW_TANGENT_PLANE"},
      .usesTapPattern = true,
-     .footprintTexels = nearestReach,
+     .footprintTexels = bilinearReach,
      .biasesDepth = true},
     {.technique = T::Gsm,
      .name = "gsm",
@@ -180,7 +182,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "soft shadows reference (whose pseudo-code normalises by the full count even when it stops "
                   "early — we do not)",
      .defines = {"GS_SHADOW_JITTERED", "GS_SHADOW_TANGENT_PLANE"},
-     .footprintTexels = nearestReach,
+     .footprintTexels = bilinearReach,
      .biasesDepth = true,
      .jittered = true},
     {.technique = T::AdaptiveBias,
