@@ -43,6 +43,23 @@ void basisAround(const glm::vec3& axis, glm::vec3& u, glm::vec3& v) {
     v = glm::cross(axis, u);
 }
 
+/// Shadow rays gathered for one batched cast, each remembering its pixel.
+struct RayBatch {
+    std::vector<glm::vec3> origins;
+    std::vector<glm::vec3> directions;
+    std::vector<float> lengths;
+    std::vector<std::size_t> pixelOf;
+
+    /// A ray `segment` long (infinite towards a sun) stops just short of the light, which may sit on a
+    /// surface.
+    void add(const glm::vec3& origin, const glm::vec3& direction, float segment, std::size_t pixel) {
+        origins.push_back(origin);
+        directions.push_back(direction);
+        lengths.push_back(std::isinf(segment) ? segment : segment * 0.9999f);
+        pixelOf.push_back(pixel);
+    }
+};
+
 } // namespace
 
 RayTracedVisibility::RayTracedVisibility(const engine::Scene& source) {
@@ -138,6 +155,10 @@ float RayTracedVisibility::rayOffset(const glm::vec3& position) const {
                     1e-5f * std::max({magnitude.x, magnitude.y, magnitude.z}));
 }
 
+glm::vec3 RayTracedVisibility::rayOrigin(const glm::vec3& position, const glm::vec3& normal) const {
+    return position + rayOffset(position) * facetNormal(position, normal);
+}
+
 glm::vec3 RayTracedVisibility::facetNormal(const glm::vec3& position, const glm::vec3& normal) const {
     if (!viewer_) {
         return normal;
@@ -185,17 +206,13 @@ void RayTracedVisibility::lightWithin(std::span<const glm::vec3> positions,
                                       const engine::FrameLight& light,
                                       std::span<std::uint8_t> reached) const {
     constexpr int kDirections = 8;
-    std::vector<glm::vec3> origins;
-    std::vector<glm::vec3> directions;
-    std::vector<float> lengths;
-    std::vector<std::size_t> pixelOf;
+    RayBatch batch;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         reached[i] = 0;
         if (!(reach[i] > 0.0f)) {
             continue;
         }
-        const glm::vec3 onSurface =
-            positions[i] + rayOffset(positions[i]) * facetNormal(positions[i], normals[i]);
+        const glm::vec3 onSurface = rayOrigin(positions[i], normals[i]);
         glm::vec3 towards;
         float length = 0.0f;
         towardsLight(light, positions[i], towards, length);
@@ -214,17 +231,14 @@ void RayTracedVisibility::lightWithin(std::span<const glm::vec3> positions,
                     segment = glm::length(toLight);
                     direction = segment > 0.0f ? toLight / segment : towards;
                 }
-                origins.push_back(origin);
-                directions.push_back(direction);
-                lengths.push_back(std::isinf(segment) ? segment : segment * 0.9999f);
-                pixelOf.push_back(i);
+                batch.add(origin, direction, segment, i);
             }
         }
     }
-    std::vector<float> free(origins.size());
-    castShadowRays(origins, directions, lengths, free);
+    std::vector<float> free(batch.origins.size());
+    castShadowRays(batch.origins, batch.directions, batch.lengths, free);
     for (std::size_t ray = 0; ray < free.size(); ++ray) {
-        reached[pixelOf[ray]] |= static_cast<std::uint8_t>(free[ray] > 0.5f);
+        reached[batch.pixelOf[ray]] |= static_cast<std::uint8_t>(free[ray] > 0.5f);
     }
 }
 
@@ -234,17 +248,13 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                                          const engine::FrameLight& light, float radius, int samplesPerAxis,
                                          std::span<float> visibility) const {
     const int samples = std::max(samplesPerAxis, 1);
-    std::vector<glm::vec3> origins;
-    std::vector<glm::vec3> directions;
-    std::vector<float> lengths;
-    std::vector<std::size_t> pixelOf;
+    RayBatch batch;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         visibility[i] = 0.0f;
         if (!covered[i]) {
             continue;
         }
-        const glm::vec3 origin =
-            positions[i] + rayOffset(positions[i]) * facetNormal(positions[i], normals[i]);
+        const glm::vec3 origin = rayOrigin(positions[i], normals[i]);
         glm::vec3 direction;
         float length = 0.0f;
         towardsLight(light, positions[i], direction, length);
@@ -272,19 +282,15 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                         target = (point - positions[i]) / segment;
                     }
                 }
-                origins.push_back(origin);
-                directions.push_back(target);
-                lengths.push_back(std::isinf(segment) ? std::numeric_limits<float>::infinity()
-                                                      : segment * 0.9999f);
-                pixelOf.push_back(i);
+                batch.add(origin, target, segment, i);
             }
         }
     }
-    std::vector<float> free(origins.size());
-    castShadowRays(origins, directions, lengths, free);
+    std::vector<float> free(batch.origins.size());
+    castShadowRays(batch.origins, batch.directions, batch.lengths, free);
     const float weight = 1.0f / static_cast<float>(samples * samples);
     for (std::size_t ray = 0; ray < free.size(); ++ray) {
-        visibility[pixelOf[ray]] += free[ray] * weight;
+        visibility[batch.pixelOf[ray]] += free[ray] * weight;
     }
 }
 

@@ -64,6 +64,8 @@ public:
 private:
     /// How far a shadow ray from `position` starts off the surface (see hardVisibility).
     [[nodiscard]] float rayOffset(const glm::vec3& position) const;
+    /// Where a shadow ray from `position` starts: that offset along the facet's normal.
+    [[nodiscard]] glm::vec3 rayOrigin(const glm::vec3& position, const glm::vec3& normal) const;
 
     /// Casts one ray per entry of `directions`/`lengths` from `origins`, writing 1 for free and 0 for
     /// blocked.
