@@ -49,6 +49,7 @@ TEST(ShadowMapArrayGLTest, MomentsAreMipmappedInThePlansFormatAndSampled) {
     ShadowSettings settings;
     settings.technique = ShadowTechnique::Msm;
     settings.msmQuantize16 = true;
+    settings.momentBlurRadius = 1;
     const ShadowPlan plan = ShadowPlan::resolve(settings);
     const ShadowMapArray target(64, 2, plan);
     ASSERT_TRUE(target.moments && target.blurTemporary);
@@ -57,4 +58,17 @@ TEST(ShadowMapArrayGLTest, MomentsAreMipmappedInThePlansFormatAndSampled) {
     EXPECT_EQ(textureLevelParameter(target.moments->id(), 6, GL_TEXTURE_WIDTH), 1); // 64 .. 1: seven levels
     // Per layer the depth and the mip chain (4/3 of level 0); one temporary layer for the blur.
     EXPECT_EQ(target.bytes(plan), 2u * (64u * 64u * 4u + 64u * 64u * 8u * 4u / 3u) + 64u * 64u * 8u);
+}
+
+TEST(ShadowMapArrayGLTest, UnblurredMomentsHaveNoBlurTemporary) {
+    glTestContext();
+    ShadowSettings settings;
+    settings.technique = ShadowTechnique::Vsm;
+    settings.momentBlurRadius = 0;
+    const ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_FALSE(plan.blursMoments);
+    const ShadowMapArray target(64, 1, plan);
+    ASSERT_TRUE(target.moments);
+    EXPECT_FALSE(target.blurTemporary || target.blurFramebuffer);
+    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 8u * 4u / 3u); // RG32F moments and their mips
 }

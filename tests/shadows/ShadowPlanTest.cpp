@@ -81,3 +81,24 @@ TEST(ShadowPlanTest, DepthFormatsAndCasterOffsets) {
     settings.earlyOutTestTaps = 0;
     EXPECT_FALSE(has(ShadowPlan::resolve(settings).lightingDefines, "GS_SHADOW_EARLY_OUT"));
 }
+
+TEST(ShadowPlanTest, MomentsAreBlurredOnlyForAMomentTechniqueWithABlurRadius) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::Evsm};
+    EXPECT_FALSE(ShadowPlan::resolve(settings).blursMoments); // the default: hardware filtering only
+    settings.momentBlurRadius = 2;
+    EXPECT_TRUE(ShadowPlan::resolve(settings).blursMoments);
+    settings.technique = ShadowTechnique::Pcf; // no moments, nothing to blur
+    EXPECT_FALSE(ShadowPlan::resolve(settings).blursMoments);
+}
+
+TEST(ShadowPlanTest, AdaptiveBiasTakesTheNearestComparisonsNormalOffset) {
+    for (const ShadowTechnique technique :
+         {ShadowTechnique::AdaptiveBias, ShadowTechnique::PcfAdaptiveBias}) {
+        ShadowSettings settings = ShadowSettings{.technique = technique};
+        const ShadowPlan plan = ShadowPlan::resolve(settings);
+        EXPECT_NEAR(plan.normalOffsetTexels, 0.70710678f, 1e-6f); // half a texel diagonal
+        EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_NORMAL_OFFSET"));
+        settings.normalOffsetTexels = 1.0f; // the margin applies to them too
+        EXPECT_NEAR(ShadowPlan::resolve(settings).normalOffsetTexels, 1.70710678f, 1e-6f);
+    }
+}

@@ -366,7 +366,10 @@ def defaults_section(views, real):
                       f"{e['trueToRendered']['mean']:.3f},{e['trueToRendered']['p95']:.3f},"
                       f"{e['renderedToTrue']['mean']:.3f},{e['renderedToTrue']['p95']:.3f},{meets_floor(r)}\n")
     out.append("## Defaults\n")
-    out.append(f"Every technique at its defaults (2048² D24 maps, PCF 4x4 over 1.5 texels, the automatic bias of "
+    s = rows[0]["settings"]
+    out.append(f"Every technique at its defaults ({s['resolution']}² {s['depthFormat'].upper()} maps, PCF "
+               f"{s['pcfTaps']}x{s['pcfTaps']} over {s['pcfRadius']:g} texels, moments blurred over "
+               f"{s['momentBlurRadius']} texels, the automatic bias of "
                f"docs/SHADOWS.md) on every content scene and real model, under the scene's own light and a sweep of "
                f"azimuths x elevations down to 1° above the horizon ({len(set(r['scene'] for r in rows))} views, "
                f"{views['width']}x{views['height']}, accuracy only), against the ray-traced truth. Floor: acne < "

@@ -24,13 +24,16 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
     if (plan.storesGradient) {
         gradient.emplace(GL_RG32F, size, layers);
     } else if (plan.momentsFormat != 0) {
-        // Moments are filtered: blurred at level 0, then mipmapped for trilinear lookups.
+        // Moments are filtered: blurred at level 0 when the settings ask for it, then mipmapped for trilinear
+        // lookups.
         moments.emplace(plan.momentsFormat, size, layers, mipLevels(resolution));
-        blurTemporary.emplace(plan.momentsFormat, size, 1);
-        blurFramebuffer.emplace("shadow moments blur");
-        blurFramebuffer->attach(GL_COLOR_ATTACHMENT0, *blurTemporary, 0);
-        blurFramebuffer->setDrawBuffers({GL_COLOR_ATTACHMENT0});
-        blurFramebuffer->check();
+        if (plan.blursMoments) {
+            blurTemporary.emplace(plan.momentsFormat, size, 1);
+            blurFramebuffer.emplace("shadow moments blur");
+            blurFramebuffer->attach(GL_COLOR_ATTACHMENT0, *blurTemporary, 0);
+            blurFramebuffer->setDrawBuffers({GL_COLOR_ATTACHMENT0});
+            blurFramebuffer->check();
+        }
     }
     framebuffers.reserve(static_cast<std::size_t>(layers));
     for (int layer = 0; layer < layers; ++layer) {
@@ -65,7 +68,7 @@ std::size_t ShadowMapArray::bytes(const ShadowPlan& plan) const {
         layer += texels * plan.momentBytesPerTexel * 4 / 3; // the mip chain: 4/3 of level 0
     }
     std::size_t total = count * layer;
-    if (moments) {
+    if (blurTemporary) {
         total += texels * plan.momentBytesPerTexel; // the blur's one temporary layer
     }
     return total;

@@ -282,6 +282,13 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
 }
 
 void ShadowModule::filterMoments() {
+    if (plan_.blursMoments) {
+        blurMoments();
+    }
+    glGenerateTextureMipmap(maps_->moments->id());
+}
+
+void ShadowModule::blurMoments() {
     const engine::gl::Program& blur = host_->programs().get(kBlurProgram, 0);
     blur.use();
     blur.set("uSource", static_cast<int>(mapUnit_));
@@ -292,22 +299,19 @@ void ShadowModule::filterMoments() {
     }
     fullscreenVertexArray_->bind();
     glBindSampler(mapUnit_, 0);
-    if (settings_.momentBlurRadius > 0) {
-        for (int layer = 0; layer < maps_->layers(); ++layer) {
-            // Horizontal into the temporary layer, then vertical back into the moments' layer, level 0.
-            maps_->blurFramebuffer->bind();
-            glBindTextureUnit(mapUnit_, maps_->moments->id());
-            blur.set("uLayer", layer);
-            blur.set("uDirection", glm::ivec2(1, 0));
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            maps_->framebuffers[static_cast<std::size_t>(layer)].bind();
-            glBindTextureUnit(mapUnit_, maps_->blurTemporary->id());
-            blur.set("uLayer", 0);
-            blur.set("uDirection", glm::ivec2(0, 1));
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
+    for (int layer = 0; layer < maps_->layers(); ++layer) {
+        // Horizontal into the temporary layer, then vertical back into the moments' layer, level 0.
+        maps_->blurFramebuffer->bind();
+        glBindTextureUnit(mapUnit_, maps_->moments->id());
+        blur.set("uLayer", layer);
+        blur.set("uDirection", glm::ivec2(1, 0));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        maps_->framebuffers[static_cast<std::size_t>(layer)].bind();
+        glBindTextureUnit(mapUnit_, maps_->blurTemporary->id());
+        blur.set("uLayer", 0);
+        blur.set("uDirection", glm::ivec2(0, 1));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    glGenerateTextureMipmap(maps_->moments->id());
     glEnable(GL_DEPTH_TEST);
 }
 

@@ -122,6 +122,7 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
         plan.depthBias = settings.depthBiasSteps * depthBiasStep(settings.depthFormat);
         plan.depthBiasFloor = settings.depthBiasSteps * kArithmeticDepthStep;
     }
+    plan.blursMoments = plan.momentsFormat != 0 && settings.momentBlurRadius > 0;
     plan.needsJitterTexture = plan.traits->jittered;
     // Two texels cover a bilinear footprint and central differences around any tap.
     plan.kernelReachTexels = 2.0f +

@@ -14,7 +14,8 @@ using S = MapSampler;
 // diagonal away; a LINEAR one blends the four texel centres around it, up to a diagonal away. PCF's taps each
 // follow the receiver's plane (pcf.glsl), so the offset need not reach the kernel's farthest tap: a diagonal
 // (more than one NEAREST comparison's reach) met the floor in the most views (docs/SHADOWS.md, "Automatic
-// bias").
+// bias"). The adaptive bias's tangent plane is exact only for a receiver that is planar over the texel: the
+// same half-diagonal offset lifts it over curved and creased ones (terrain's sub-texel relief).
 constexpr float kNearestReach = 0.70710678f;
 constexpr float kBilinearReach = 1.41421356f;
 
@@ -189,16 +190,21 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .name = "adaptive-bias",
      .summary =
          "one hardware comparison at the depth of the receiver's tangent plane (from its normal) on the "
-         "light's ray through the texel's centre, minus `depthBiasSteps` format steps",
+         "light's ray through the texel's centre, minus `depthBiasSteps` format steps; the receiver pushed "
+         "along its normal by half a texel diagonal × sin(normal, light), for receivers that are not planar "
+         "over the texel",
      .reference = "Dou, Yan, Kerzner, Dai, Wyman, \"Adaptive Depth Bias for Shadow Maps\", JCGT 3(4) 2014",
      .defines = {"GS_SHADOW_ADAPTIVE", "GS_SHADOW_TANGENT_PLANE"},
+     .footprintTexels = nearestReach,
      .biasesDepth = true},
     {.technique = T::PcfAdaptiveBias,
      .name = "pcf-adaptive-bias",
-     .summary = "`adaptive-bias` for every tap of the PCF pattern, each at its own texel's centre",
+     .summary = "`adaptive-bias` for every tap of the PCF pattern, each at its own texel's centre (the same "
+                "normal offset)",
      .reference = "Ehm et al., WSCG 2015",
      .defines = {"GS_SHADOW_ADAPTIVE_PCF", "GS_SHADOW_TANGENT_PLANE"},
      .usesTapPattern = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true},
     {.technique = T::PcfGsmConnected,
      .name = "pcf-gsm-connected",

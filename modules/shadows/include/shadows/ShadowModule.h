@@ -92,7 +92,9 @@ private:
     };
 
     void releaseResources();
+    /// Blurs the moments when the plan asks for it, then mipmaps them.
     void filterMoments();
+    void blurMoments();
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
     void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit);
     [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;

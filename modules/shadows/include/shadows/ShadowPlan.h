@@ -36,6 +36,9 @@ struct ShadowPlan {
     bool storesGradient = false;
     /// Format of the filtered moments target (blurred, mipmapped), 0 when the technique stores none.
     GLenum momentsFormat = 0;
+    /// The moments are box-blurred (momentBlurRadius > 0): the blur's temporary layer and passes exist only
+    /// then.
+    bool blursMoments = false;
     /// Bytes of one moments texel at mip level 0.
     std::size_t momentBytesPerTexel = 0;
     /// What empty moments texels hold: the far plane's moments in the stored basis.

@@ -80,8 +80,10 @@ struct ShadowSettings {
     TapLayout pcfLayout = TapLayout::Grid;
     /// Taps per side of a grid, or the number of Poisson taps.
     int pcfTaps = 4;
-    /// Radius of the tap pattern (and of jittered offsets), texels.
-    float pcfRadius = 1.5f;
+    /// Radius of the tap pattern (and of jittered offsets), texels. The default keeps the kernel's penumbra
+    /// inside the two texels a shadow's edge may blur over (docs/SHADOWS.md, "The filter inside the edge's
+    /// band").
+    float pcfRadius = 0.75f;
     /// Rotates the pattern per pixel: noise instead of banding.
     bool pcfRotate = false;
     /// Where the fragment's depth gradient comes from.
@@ -107,8 +109,9 @@ struct ShadowSettings {
     float cascadeSplitWeight = 0.9f;
     /// Fraction of each cascade's depth span, at its far end, blended into the next cascade.
     float cascadeBlend = 0.1f;
-    /// Half-width of the moments' separable box blur, texels.
-    int momentBlurRadius = 2;
+    /// Half-width of the moments' separable box blur, texels; 0 (the default) leaves the moments to the
+    /// hardware's bilinear and trilinear filtering (docs/SHADOWS.md, "The filter inside the edge's band").
+    int momentBlurRadius = 0;
     /// Smallest variance the Chebyshev bound uses.
     float vsmMinimumVariance = 1e-6f;
     /// Tail of the Chebyshev bound cut off (linstep).
