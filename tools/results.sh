@@ -16,14 +16,18 @@ rm -rf "$work"
 # 2. Every stress scene at one map size (spheres: a spot light), plus the reproductions of the references' claims.
 "$bench" --scene torus --scene bowl --scene thin-shell --scene crease-cube --scene grazing-plane --scene spheres \
     --taps 4 --resolutions 1024 --frames 5 --out "$work/scenes"
-"$bench" --scene knob --techniques pcf,pcf-gsm-naive,pcf-gsm-point,pcf-gsm-average,pcf-gsm-quadratic \
-    --taps 5 --radius 2 --resolutions 1024 --frames 15 \
+# The corrections of PCF over GSM as the reference has them: without the module's normal offset.
+reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false"
+"$bench" --scene knob --techniques pcf,pcf-gsm-naive --taps 5 --radius 2 --resolutions 1024 --frames 15 \
+    --config "pcf-gsm-point-5x5-1024-d24:technique=pcf-gsm-point,$reference" \
+    --config "pcf-gsm-average-5x5-1024-d24:technique=pcf-gsm-average,$reference" \
+    --config "pcf-gsm-quadratic-5x5-1024-d24:technique=pcf-gsm-quadratic,$reference" \
     --config "rpb-d16-round:technique=receiver-plane,depthFormat=d16" \
     --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true" \
     --config "rpb-d24-round:technique=receiver-plane,depthFormat=d24" \
     --config "rpb-d24-floor:technique=receiver-plane,depthFormat=d24,floorReceiverDepth=true" \
-    --config "average-circular8:technique=pcf-gsm-average,averageGradientForm=circular8,pcfRadius=1" \
-    --config "average-circular8-vec4:technique=pcf-gsm-average,averageGradientForm=circular8-vec4,pcfRadius=1" \
+    --config "average-circular8:technique=pcf-gsm-average,averageGradientForm=circular8,pcfRadius=1,footprintNormalOffset=false" \
+    --config "average-circular8-vec4:technique=pcf-gsm-average,averageGradientForm=circular8-vec4,pcfRadius=1,footprintNormalOffset=false" \
     --config "naive-circular8:technique=pcf-gsm-naive,pcfLayout=circular8,pcfRadius=1" \
     --out "$work/reproduction"
 

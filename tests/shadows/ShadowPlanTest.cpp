@@ -102,3 +102,16 @@ TEST(ShadowPlanTest, AdaptiveBiasTakesTheNearestComparisonsNormalOffset) {
         EXPECT_NEAR(ShadowPlan::resolve(settings).normalOffsetTexels, 1.70710678f, 1e-6f);
     }
 }
+
+TEST(ShadowPlanTest, TheFootprintNormalOffsetCanBeTurnedOffLeavingOnlyTheMargin) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::PcfGsmPointGradient};
+    EXPECT_NEAR(ShadowPlan::resolve(settings).normalOffsetTexels, 0.70710678f, 1e-6f);
+    settings.footprintNormalOffset = false; // the reference's form: no offset, no variant bit
+    ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.normalOffsetTexels, 0.0f);
+    EXPECT_FALSE(has(plan.lightingDefines, "GS_SHADOW_NORMAL_OFFSET"));
+    settings.normalOffsetTexels = 0.5f; // a margin alone still offsets
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.normalOffsetTexels, 0.5f);
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_NORMAL_OFFSET"));
+}

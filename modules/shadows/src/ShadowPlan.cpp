@@ -48,7 +48,8 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     if (plan.usesTapPattern && settings.pcfRotate) {
         defines.push_back("GS_SHADOW_ROTATE");
     }
-    if (plan.traits->footprintTexels) {
+    if (plan.traits->footprintTexels &&
+        (settings.footprintNormalOffset || settings.normalOffsetTexels > 0.0f)) {
         defines.push_back("GS_SHADOW_NORMAL_OFFSET");
     }
     if (settings.floorReceiverDepth) {
@@ -116,7 +117,9 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     plan.depthBytesPerTexel = settings.depthFormat == DepthFormat::D16 ? 2 : 4;
     plan.offsetsCasters = plan.traits->offsetsCasters;
     if (plan.traits->footprintTexels) {
-        plan.normalOffsetTexels = plan.traits->footprintTexels(settings) + settings.normalOffsetTexels;
+        plan.normalOffsetTexels =
+            (settings.footprintNormalOffset ? plan.traits->footprintTexels(settings) : 0.0f) +
+            settings.normalOffsetTexels;
     }
     if (plan.traits->biasesDepth) {
         plan.depthBias = settings.depthBiasSteps * depthBiasStep(settings.depthFormat);

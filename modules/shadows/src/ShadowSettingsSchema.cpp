@@ -136,6 +136,13 @@ const std::vector<SettingRow>& rows() {
         {"receiverPlaneClamp", "", "clamp bias to min(0, bias)",
          "Only let the bias move receivers towards the light.", BoolSetting{&S::receiverPlaneClamp},
          only<T::ReceiverPlaneBias>},
+        {"footprintNormalOffset", "", "normal offset by the footprint",
+         "Push the receiver along its normal by the comparison's footprint (half a texel diagonal for one "
+         "NEAREST or linearly filtered fetch, a diagonal for 2x2 bilinear PCF) times the sine of its angle "
+         "to "
+         "the light (docs/SHADOWS.md, \"Automatic bias\"). Off: only normalOffsetTexels, as the references' "
+         "techniques have it.",
+         BoolSetting{&S::footprintNormalOffset}, offsetsAlongNormal},
         {"normalOffsetTexels", "texels", "normal offset margin",
          "Margin beyond the comparison's footprint: the receiver is pushed along its normal by "
          "(footprint + this) texel sizes times the sine of its angle to the light, which clears a plane "

@@ -14,8 +14,10 @@ using S = MapSampler;
 // diagonal away; a LINEAR one blends the four texel centres around it, up to a diagonal away. PCF's taps each
 // follow the receiver's plane (pcf.glsl), so the offset need not reach the kernel's farthest tap: a diagonal
 // (more than one NEAREST comparison's reach) met the floor in the most views (docs/SHADOWS.md, "Automatic
-// bias"). The adaptive bias's tangent plane is exact only for a receiver that is planar over the texel: the
-// same half-diagonal offset lifts it over curved and creased ones (terrain's sub-texel relief).
+// bias"). The adaptive bias's tangent plane, and the fuzzy comparison of GSM and PCF over GSM (one gradient
+// width at the linearly filtered depth), hold only for a receiver that is planar over the texel: the same
+// half-diagonal offset lifts it over curved and creased ones (terrain's sub-texel relief).
+// ShadowSettings::footprintNormalOffset turns these offsets off, for the references' own forms.
 constexpr float kNearestReach = 0.70710678f;
 constexpr float kBilinearReach = 1.41421356f;
 
@@ -68,6 +70,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_GSM"},
      .readsPointGradient = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmNaive,
@@ -88,6 +91,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_POINT"},
      .readsPointGradient = true,
      .usesTapPattern = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmAverageGradient,
@@ -98,6 +102,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_AVERAGE"},
      .usesTapPattern = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmQuadratic,
@@ -108,6 +113,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
      .usesTapPattern = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmNearer,
@@ -120,6 +126,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NEARER"},
      .readsPointGradient = true,
      .usesTapPattern = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::ReceiverPlaneBias,
@@ -216,6 +223,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_CONNECTED"},
      .readsPointGradient = true,
      .usesTapPattern = true,
+     .footprintTexels = nearestReach,
      .biasesDepth = true,
      .fuzzyComparison = true},
 }};

@@ -96,6 +96,9 @@ struct ShadowSettings {
     ReceiverPlaneKernel receiverPlaneKernel = ReceiverPlaneKernel::Bilinear2x2;
     /// Clamps the receiver-plane bias to min(0, bias).
     bool receiverPlaneClamp = true;
+    /// Pushes the receiver along its normal by the technique's comparison footprint (docs/SHADOWS.md,
+    /// "Automatic bias"); off, only normalOffsetTexels, as the references' techniques have it.
+    bool footprintNormalOffset = true;
     /// Margin beyond the comparison's footprint of the normal offset, texel sizes.
     float normalOffsetTexels = 0.0f;
     /// Floors the receiver depth to the format's step before comparing.
