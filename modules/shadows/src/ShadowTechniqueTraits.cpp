@@ -16,7 +16,8 @@ using S = MapSampler;
 // (more than one NEAREST comparison's reach) met the floor in the most views (docs/SHADOWS.md, "Automatic
 // bias"). The adaptive bias's tangent plane, and the fuzzy comparison of GSM and PCF over GSM (one gradient
 // width at the linearly filtered depth), hold only for a receiver that is planar over the texel: the same
-// half-diagonal offset lifts it over curved and creased ones (terrain's sub-texel relief).
+// half-diagonal offset lifts it over curved and creased ones (terrain's sub-texel relief), and so it does for
+// the caster offset, the receiver-plane bias and the moment maps' bounds.
 // ShadowSettings::footprintNormalOffset turns these offsets off, for the references' own forms.
 constexpr float kNearestReach = 0.70710678f;
 constexpr float kBilinearReach = 1.41421356f;
@@ -42,10 +43,12 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .naive = true},
     {.technique = T::SlopeScaledBias,
      .name = "slope-scaled",
-     .summary = "as `hard` plus `glPolygonOffset(slopeScale, slopeUnits)` on the casters",
+     .summary = "as `hard` plus `glPolygonOffset(slopeScale, slopeUnits)` on the casters (and the receiver "
+                "pushed half a texel diagonal along its normal, as every non-naive technique)",
      .reference = "bias reference, \"Alternatives\"",
      .defines = {"GS_SHADOW_SINGLE_COMPARE"},
-     .offsetsCasters = true},
+     .offsetsCasters = true,
+     .footprintTexels = nearestReach},
     {.technique = T::HardwarePcf,
      .name = "hw-pcf",
      .summary = "hardware 2×2 bilinear PCF (LINEAR)",
@@ -136,6 +139,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "bias reference, \"Receiver Plane Depth Bias\"",
      .sampler = S::DepthLinear,
      .defines = {"GS_SHADOW_RECEIVER_PLANE"},
+     .footprintTexels = nearestReach,
      .biasesDepth = true},
     {.technique = T::NormalOffset,
      .name = "normal-offset",
@@ -155,6 +159,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_VSM"},
      .moments = {"GS_SHADOW_STORE_MOMENTS2", [](const ShadowSettings&) -> GLenum { return GL_RG32F; },
                  [](const ShadowSettings&) { return glm::vec4(1.0f); }},
+     .footprintTexels = nearestReach,
      .chebyshevBound = true},
     {.technique = T::Msm,
      .name = "msm",
@@ -167,7 +172,8 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
                  [](const ShadowSettings& s) -> GLenum { return s.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F; },
                  [](const ShadowSettings& s) {
                      return s.msmQuantize16 ? glsl::gsMsmQuantize(glm::vec4(1.0f)) : glm::vec4(1.0f);
-                 }}},
+                 }},
+     .footprintTexels = nearestReach},
     {.technique = T::Evsm,
      .name = "evsm",
      .summary = "exponential variance shadow map: depth warped to exp(c+ d) and -exp(-c- d) "
@@ -179,6 +185,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .moments = {"GS_SHADOW_STORE_EVSM", [](const ShadowSettings&) -> GLenum { return GL_RGBA32F; },
                  [](const ShadowSettings& s) { return glsl::gsEvsmMoments(1.0f, evsmExponents(s)); }},
      .shaderParameters = [](const ShadowSettings& s) { return glm::vec4(evsmExponents(s), 0.0f, 0.0f); },
+     .footprintTexels = nearestReach,
      .chebyshevBound = true},
     {.technique = T::JitteredPcf,
      .name = "pcf-jittered",
