@@ -22,10 +22,10 @@ reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false"
     --config "pcf-gsm-point-5x5-1024-d24:technique=pcf-gsm-point,$reference" \
     --config "pcf-gsm-average-5x5-1024-d24:technique=pcf-gsm-average,$reference" \
     --config "pcf-gsm-quadratic-5x5-1024-d24:technique=pcf-gsm-quadratic,$reference" \
-    --config "rpb-d16-round:technique=receiver-plane,depthFormat=d16" \
-    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true" \
-    --config "rpb-d24-round:technique=receiver-plane,depthFormat=d24" \
-    --config "rpb-d24-floor:technique=receiver-plane,depthFormat=d24,floorReceiverDepth=true" \
+    --config "rpb-d16-round:technique=receiver-plane,depthFormat=d16,footprintNormalOffset=false" \
+    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true,footprintNormalOffset=false" \
+    --config "rpb-d24-round:technique=receiver-plane,depthFormat=d24,footprintNormalOffset=false" \
+    --config "rpb-d24-floor:technique=receiver-plane,depthFormat=d24,floorReceiverDepth=true,footprintNormalOffset=false" \
     --config "average-circular8:technique=pcf-gsm-average,averageGradientForm=circular8,pcfRadius=1,footprintNormalOffset=false" \
     --config "average-circular8-vec4:technique=pcf-gsm-average,averageGradientForm=circular8-vec4,pcfRadius=1,footprintNormalOffset=false" \
     --config "naive-circular8:technique=pcf-gsm-naive,pcfLayout=circular8,pcfRadius=1" \

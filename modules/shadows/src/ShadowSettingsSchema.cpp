@@ -139,9 +139,8 @@ const std::vector<SettingRow>& rows() {
         {"footprintNormalOffset", "", "normal offset by the footprint",
          "Push the receiver along its normal by the comparison's footprint (half a texel diagonal for one "
          "NEAREST or linearly filtered fetch, a diagonal for 2x2 bilinear PCF) times the sine of its angle "
-         "to "
-         "the light (docs/SHADOWS.md, \"Automatic bias\"). Off: only normalOffsetTexels, as the references' "
-         "techniques have it.",
+         "to the light (docs/SHADOWS.md, \"Automatic bias\"). Off: only normalOffsetTexels, as the "
+         "references' techniques have it.",
          BoolSetting{&S::footprintNormalOffset}, offsetsAlongNormal},
         {"normalOffsetTexels", "texels", "normal offset margin",
          "Margin beyond the comparison's footprint: the receiver is pushed along its normal by "

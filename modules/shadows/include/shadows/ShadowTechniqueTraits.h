@@ -86,10 +86,10 @@ struct ShadowTechniqueTraits {
     bool usesTapPattern = false;
     /// Renders casters with slope-scaled polygon offset.
     bool offsetsCasters = false;
-    /// How far, in texels, the technique's hardware comparisons reach from the receiver's own position in
-    /// the map (its kernel's footprint). Such a technique pushes the receiver along its normal to clear its
-    /// own surface over that reach (normalOffsetTexels adds a margin; depthBiasSteps applies); null for
-    /// techniques that need no such offset.
+    /// How far, in texels, the technique's comparisons reach from the receiver's own position in the map (its
+    /// kernel's footprint). Such a technique pushes the receiver along its normal to clear its own surface
+    /// over that reach (ShadowSettings::footprintNormalOffset; normalOffsetTexels adds a margin;
+    /// depthBiasSteps applies); null for the naive techniques, which have no offset.
     float (*footprintTexels)(const ShadowSettings&) = nullptr;
     /// Lowers its comparison depth by depthBiasSteps steps of the depth format.
     bool biasesDepth = false;
