@@ -16,7 +16,7 @@ GLenum glDepthFormat(DepthFormat format) {
     return GL_DEPTH_COMPONENT24;
 }
 
-/// The technique's options that select shader code.
+/// The technique's options that select shader code (after the plan's normal offset, whose bit follows it).
 void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     std::vector<std::string_view>& defines = plan.lightingDefines;
     if (settings.technique == ShadowTechnique::ReceiverPlaneBias &&
@@ -48,8 +48,7 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     if (plan.usesTapPattern && settings.pcfRotate) {
         defines.push_back("GS_SHADOW_ROTATE");
     }
-    if (plan.traits->footprintTexels &&
-        (settings.footprintNormalOffset || settings.normalOffsetTexels > 0.0f)) {
+    if (plan.normalOffsetTexels > 0.0f) {
         defines.push_back("GS_SHADOW_NORMAL_OFFSET");
     }
     if (settings.floorReceiverDepth) {
@@ -103,6 +102,11 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     if (plan.storesGradient) {
         plan.depthDefines.push_back("GS_SHADOW_STORE_GRADIENT");
     }
+    if (plan.traits->footprintTexels) {
+        plan.normalOffsetTexels =
+            (settings.footprintNormalOffset ? plan.traits->footprintTexels(settings) : 0.0f) +
+            settings.normalOffsetTexels;
+    }
     addOptionDefines(settings, plan);
     if (const MomentStore& moments = plan.traits->moments; moments.format) {
         plan.momentsFormat = moments.format(settings);
@@ -116,11 +120,6 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     plan.depthFormat = glDepthFormat(settings.depthFormat);
     plan.depthBytesPerTexel = settings.depthFormat == DepthFormat::D16 ? 2 : 4;
     plan.offsetsCasters = plan.traits->offsetsCasters;
-    if (plan.traits->footprintTexels) {
-        plan.normalOffsetTexels =
-            (settings.footprintNormalOffset ? plan.traits->footprintTexels(settings) : 0.0f) +
-            settings.normalOffsetTexels;
-    }
     if (plan.traits->biasesDepth) {
         plan.depthBias = settings.depthBiasSteps * depthBiasStep(settings.depthFormat);
         plan.depthBiasFloor = settings.depthBiasSteps * kArithmeticDepthStep;
