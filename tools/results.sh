@@ -16,8 +16,9 @@ rm -rf "$work"
 # 2. Every stress scene at one map size (spheres: a spot light), plus the reproductions of the references' claims.
 "$bench" --scene torus --scene bowl --scene thin-shell --scene crease-cube --scene grazing-plane --scene spheres \
     --taps 4 --resolutions 1024 --frames 5 --out "$work/scenes"
-# The corrections of PCF over GSM as the reference has them: without the module's normal offset.
-reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false"
+# The corrections of PCF over GSM as the reference has them: without the module's normal offset, and with the
+# map's own gradient (central differences).
+reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false,gradientSource=central"
 "$bench" --scene knob --techniques pcf,pcf-gsm-naive --taps 5 --radius 2 --resolutions 1024 --frames 15 \
     --config "pcf-gsm-point-5x5-1024-d24:technique=pcf-gsm-point,$reference" \
     --config "pcf-gsm-average-5x5-1024-d24:technique=pcf-gsm-average,$reference" \

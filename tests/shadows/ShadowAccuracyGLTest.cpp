@@ -344,10 +344,12 @@ public:
     }
 
     /// Mean 1 - V of `technique` over the mask (built from the first measurement: geometry only).
-    /// `footprintNormalOffset`: false measures the corrections as the reference has them.
+    /// `footprintNormalOffset`: false measures the corrections as the reference has them. The point gradient
+    /// is the map's own (central differences, as in docs/RESULTS.md's reproduction), not the module's default.
     double darkening(ShadowTechnique technique, bool footprintNormalOffset = false) {
         ShadowSettings settings;
         settings.technique = technique;
+        settings.gradientSource = GradientSource::CentralDifferences;
         settings.resolution = kResolution;
         settings.pcfTaps = 5;
         settings.pcfRadius = 2.0f;

@@ -285,7 +285,7 @@ def real_models(real, scaling):
                "triangles. (2) Large models: both renderers then spend most of the frame in llvmpipe's triangle setup, "
                "binning and shaders (a profile of our frame shows little time in our own code), so chunking, culling and the allocator bring us level, not 1.7x ahead. (3) `gsm` versus "
                "ViewDependentShadowMap: both render one 2048² depth pass over the casters; our lighting pass then "
-               "adds a filtered lookup plus four central-difference lookups per pixel for the gradient, VDSM one "
+               "adds a filtered lookup per pixel and the receiver's gradient from its screen derivatives, VDSM one "
                "comparison. (4) Timing noise: two identical runs differ by the spread of the `repeat` column of the "
                "renderer options table below; ratios within it are not differences. " + accuracy_summary(real) + "\n")
     out.append("### Frame time from 10k to 1M triangles\n")

@@ -159,9 +159,11 @@ const int GS_CORRECTION_QUADRATIC = 3; // taps follow a least-squares quadric of
 const int GS_CORRECTION_NEARER = 4;
 
 // PCF over GSM: the average of the fuzzy visibilities of the taps, each compared at the receiver depth the
-// chosen correction predicts for it, or at the fragment's own where the prediction lies deeper. `pointGradient`
-// is used by GS_CORRECTION_POINT and for the fuzzy width of GS_CORRECTION_NONE; the fitted corrections use
-// their own gradient for both.
+// chosen correction predicts for it, or at the fragment's own where the prediction lies deeper. `pointGradient`,
+// the fragment's own, drives GS_CORRECTION_POINT and is every correction's fuzzy width ("proportional to the
+// local gradient", GSM reference, "Overview"): a fit over taps that straddle a caster's silhouette takes the
+// jump's slope, and a band that wide lets a receiver far behind the caster through (terrain under a 1° sun: the
+// average gradient leaked 33 of 20,830 shadowed pixels).
 float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_MAX_TAPS], int count, float receiverDepth,
                          vec2 pointGradient, int correction, mat2 inverseCovariance,
                          const float fitRows[6 * GS_MAX_TAPS], float fuzzyScale, float minimumWidth) {
@@ -172,8 +174,7 @@ float gsPcfGsmVisibility(const float depths[GS_MAX_TAPS], const vec2 offsets[GS_
     } else if (correction == GS_CORRECTION_QUADRATIC) {
         gradient = gsQuadraticFit(depths, count, fitRows, curvature);
     }
-    float magnitude =
-        correction == GS_CORRECTION_NEARER ? max(length(gradient), length(pointGradient)) : length(gradient);
+    float magnitude = length(pointGradient);
     float sum = 0.0f;
     for (int i = 0; i < count; ++i) {
         // The receiver plane followed from the fragment to the tap (GSM multisampling reference, "Merging the
