@@ -345,7 +345,8 @@ public:
 
     /// Mean 1 - V of `technique` over the mask (built from the first measurement: geometry only).
     /// `footprintNormalOffset`: false measures the corrections as the reference has them. The point gradient
-    /// is the map's own (central differences, as in docs/RESULTS.md's reproduction), not the module's default.
+    /// is the map's own (central differences, as in docs/RESULTS.md's reproduction), not the module's
+    /// default.
     double darkening(ShadowTechnique technique, bool footprintNormalOffset = false) {
         ShadowSettings settings;
         settings.technique = technique;

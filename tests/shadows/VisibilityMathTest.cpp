@@ -133,8 +133,9 @@ TEST(VisibilityMathTest, QuadraticFitRecoversAParaboloid) {
 
 TEST(VisibilityMathTest, ConcaveSurfaceDarkensLessUnderHigherOrderCorrections) {
     // A concave valley (curving towards the light, i.e. depth decreasing away from the fragment), the
-    // knob-neck case of Fig. 4.2.5: both planes darken it, the quadric does not. For a parabola and a symmetric
-    // pattern the least-squares slope is the tangent's, so the average gradient darkens it as the point one.
+    // knob-neck case of Fig. 4.2.5: both planes darken it, the quadric does not. For a parabola and a
+    // symmetric pattern the least-squares slope is the tangent's, so the average gradient darkens it as the
+    // point one.
     const TapPattern p = TapPattern::make(TapLayout::Grid, 5, 2.0f);
     const glm::vec2 slope(4e-4f, 0.0f);
     auto valley = [&](glm::vec2 o) { return 0.5f + glm::dot(o, slope) - 6e-5f * (o.x * o.x + o.y * o.y); };
@@ -476,15 +477,16 @@ TEST(VisibilityMathTest, NearerCorrectionDarkensAConcaveCreaseNoMoreThanEitherRe
 }
 
 TEST(VisibilityMathTest, EveryCorrectionKeepsAReceiverUnderASilhouetteInShadow) {
-    // A receiver in the shadow of two casters, which the taps see on both sides of the nearer one's silhouette:
-    // 0.40 left of x = 0.3, 0.46 right of it, 0.01 in front of the receiver. The taps' least-squares gradient fits
-    // the jump; as a fuzzy width it lets the receiver through (terrain under a 1° sun leaked there), so every
-    // correction's width is the fragment's own gradient.
+    // A receiver in the shadow of two casters, which the taps see on both sides of the nearer one's
+    // silhouette: 0.40 left of x = 0.3, 0.46 right of it, 0.01 in front of the receiver. The taps'
+    // least-squares gradient fits the jump; as a fuzzy width it lets the receiver through (terrain under a 1°
+    // sun leaked there), so every correction's width is the fragment's own gradient.
     const TapPattern p = TapPattern::make(TapLayout::Grid, 4, 0.75f);
     const glm::vec2 own(1e-4f, 0.0f);
     auto casters = [](glm::vec2 o) { return o.x < 0.3f ? 0.40f : 0.46f; };
     const Taps taps = sample(p, casters, {});
-    const glm::vec2 fit = g::gsLeastSquaresGradient(taps.depths, taps.offsets, taps.count, p.inverseCovariance);
+    const glm::vec2 fit =
+        g::gsLeastSquaresGradient(taps.depths, taps.offsets, taps.count, p.inverseCovariance);
     EXPECT_GT(pcfGsm(p, taps, 0.47f, fit, g::GS_CORRECTION_POINT), 0.1f);
     for (const int correction : {g::GS_CORRECTION_POINT, g::GS_CORRECTION_AVERAGE, g::GS_CORRECTION_QUADRATIC,
                                  g::GS_CORRECTION_NEARER}) {

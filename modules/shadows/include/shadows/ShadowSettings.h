@@ -86,8 +86,8 @@ struct ShadowSettings {
     float pcfRadius = 0.75f;
     /// Rotates the pattern per pixel: noise instead of banding.
     bool pcfRotate = false;
-    /// Where the fragment's depth gradient comes from. The default is the receiver's own plane: differences of
-    /// the map straddle a caster's silhouette, and the jump widens the fuzzy comparison into a leak
+    /// Where the fragment's depth gradient comes from. The default is the receiver's own plane: differences
+    /// of the map straddle a caster's silhouette, and the jump widens the fuzzy comparison into a leak
     /// (docs/SHADOWS.md, "The receiver's own gradient").
     GradientSource gradientSource = GradientSource::ScreenSpace;
     /// Width of the GSM fuzzy comparison band, texels.
