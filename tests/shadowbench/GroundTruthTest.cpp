@@ -222,18 +222,49 @@ TEST(GroundTruthTest, SoftVisibilityIsTheUnblockedFractionOfTheDisk) {
     EXPECT_EQ(visibility[2], 1.0f); // beyond the blocker's edge at x = -2
 }
 
-TEST(GroundTruthTest, LightWithinFindsTheLightPastTheShadowsEdgeAcrossTheRays) {
+TEST(GroundTruthTest, EdgeWithinFindsTheOtherSideOfTheShadowsEdgeAcrossTheRays) {
     // Under an overhead sun a unit ball 2 above the ground shadows a unit disk: its edge lies 1 from the
-    // point under the centre and 0.2 from a point 0.8 out, measured across the rays.
+    // point under the centre and 0.2 from a point 0.8 out, measured across the rays; the same from a lit
+    // point 1.2 out.
     const glm::vec3 centre(0.5f, 2.0f, -0.5f);
     const RayTracedVisibility tracer(ballOverGround(centre));
-    const std::vector<glm::vec3> positions{
-        {0.5f, 0, -0.5f}, {0.5f, 0, -0.5f}, {1.3f, 0, -0.5f}, {1.3f, 0, -0.5f}, {0.5f, 0, -0.5f}};
+    const std::vector<glm::vec3> positions{{0.5f, 0, -0.5f}, {0.5f, 0, -0.5f}, {1.3f, 0, -0.5f},
+                                           {1.3f, 0, -0.5f}, {0.5f, 0, -0.5f}, {1.7f, 0, -0.5f},
+                                           {1.7f, 0, -0.5f}};
     const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
-    const std::vector<float> reach{0.9f, 1.1f, 0.1f, 0.3f, 0.0f};
-    std::vector<std::uint8_t> reached(positions.size(), 7);
-    tracer.lightWithin(positions, normals, reach, sun({0, -1, 0}), reached);
-    EXPECT_EQ(reached, (std::vector<std::uint8_t>{0, 1, 0, 1, 0}));
+    const std::vector<float> reach{0.9f, 1.1f, 0.1f, 0.3f, 0.0f, 0.1f, 0.3f};
+    const std::vector<std::uint8_t> lit{0, 0, 0, 0, 0, 1, 1};
+    std::vector<std::uint8_t> marked(positions.size(), 7);
+    tracer.edgeWithin(positions, normals, reach, lit, sun({0, -1, 0}), marked);
+    EXPECT_EQ(marked, (std::vector<std::uint8_t>{0, 1, 0, 1, 0, 0, 1}));
+}
+
+TEST(GroundTruthTest, EdgeWithinALitReceiverCountsOnlyThePointsItReaches) {
+    // A thin wall x = 0 (y in [0, 4], z in [-2, 2]) on the ground, the sun at +x, +y, +z: the ground just
+    // past the wall (x < 0) lies in its shadow. Across the rays a point 0.1 before the wall reaches the
+    // shadowed ground past it only through the wall, and any lit point reaches the ground's underside only
+    // through the ground: neither is an edge of its shadow. The shadowed foot of the wall is in the band, as
+    // under any caster narrower than the band.
+    engine::Scene scene;
+    testsupport::addGround(scene, 20.0f);
+    const auto wall = scene.create("wall");
+    scene.entity(wall).mesh =
+        engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::plane(4.0f, 1))};
+    scene.entity(wall).transform.translation = {0.0f, 2.0f, 0.0f};
+    scene.entity(wall).transform.rotation = glm::angleAxis(glm::half_pi<float>(), glm::vec3(0, 0, 1));
+    const RayTracedVisibility tracer(scene);
+    const engine::FrameLight light = sun({-1.0f, -1.0f, -1.0f});
+    const std::vector<glm::vec3> positions{{0.1f, 0, 0}, {6.0f, 0, 0}, {-0.1f, 0, 0}};
+    const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
+    std::vector<float> visibility(positions.size());
+    tracer.hardVisibility(positions, normals, std::vector<std::uint8_t>(positions.size(), 1), light,
+                          visibility);
+    ASSERT_EQ(visibility, (std::vector<float>{1.0f, 1.0f, 0.0f}));
+    const std::vector<float> reach(positions.size(), 1.0f);
+    const std::vector<std::uint8_t> lit{1, 1, 0};
+    std::vector<std::uint8_t> marked(positions.size(), 7);
+    tracer.edgeWithin(positions, normals, reach, lit, light, marked);
+    EXPECT_EQ(marked, (std::vector<std::uint8_t>{0, 0, 1}));
 }
 
 /// Pixel positions of a `size` image laid on the ground y = 0, one world unit apart, rows along z.
@@ -353,20 +384,21 @@ TEST(ShadowMetricsTest, ALitReceiverMeetingASurfaceFacingAwayIsAtAnEdgeOfTheLigh
                                        PixelClass::Shadowed}));
 }
 
-TEST(ShadowMetricsTest, ADarkReceiverTheLightReachesWithinTheBandIsInTheBand) {
-    // Where the light reaches near a shadowed receiver off the image (its lit side hidden from the camera, or
-    // a caster narrower than the band), the receiver is in the band; a lit receiver is unaffected.
-    const glm::ivec2 size(6, 1);
-    const std::vector<float> truth{0, 0, 0, 1, 1, 1};
-    const std::vector<Surface> surfaces(6, Surface::Receiver);
+TEST(ShadowMetricsTest, AReceiverWhoseEdgeLiesWithinTheBandOffTheImageIsInTheBand) {
+    // Where the other side of a receiver's shadow edge lies near it off the image (hidden from the camera, or
+    // a caster narrower than the band), the receiver is in the band, lit or shadowed.
+    const glm::ivec2 size(7, 1);
+    const std::vector<float> truth{0, 0, 0, 1, 1, 1, 1};
+    const std::vector<Surface> surfaces(7, Surface::Receiver);
     const std::vector<glm::vec3> positions = groundPixels(size);
-    const std::vector<float> texels(6, 0.01f);
-    const std::vector<std::uint8_t> lightWithinBand{1, 0, 0, 0, 0, 1};
+    const std::vector<float> texels(7, 0.01f);
+    const std::vector<std::uint8_t> edgeWithinBand{1, 0, 0, 0, 0, 1, 0};
     LightPlane plane{positions, texels};
-    plane.lightWithinBand = lightWithinBand;
-    EXPECT_EQ(classify(size, truth, surfaces, plane, 2.0f),
-              (std::vector<PixelClass>{PixelClass::Band, PixelClass::Shadowed, PixelClass::Band,
-                                       PixelClass::Band, PixelClass::Lit, PixelClass::Lit}));
+    plane.edgeWithinBand = edgeWithinBand;
+    EXPECT_EQ(
+        classify(size, truth, surfaces, plane, 2.0f),
+        (std::vector<PixelClass>{PixelClass::Band, PixelClass::Shadowed, PixelClass::Band, PixelClass::Band,
+                                 PixelClass::Lit, PixelClass::Band, PixelClass::Lit}));
 }
 
 TEST(ShadowMetricsTest, APointLightMeasuresAcrossItsRaysAtTheReceiversDistance) {

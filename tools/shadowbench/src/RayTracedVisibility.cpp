@@ -201,14 +201,17 @@ void RayTracedVisibility::hardVisibility(std::span<const glm::vec3> positions,
     softVisibility(positions, normals, covered, light, 0.0f, 1, visibility);
 }
 
-void RayTracedVisibility::lightWithin(std::span<const glm::vec3> positions,
-                                      std::span<const glm::vec3> normals, std::span<const float> reach,
-                                      const engine::FrameLight& light,
-                                      std::span<std::uint8_t> reached) const {
+void RayTracedVisibility::edgeWithin(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                                     std::span<const float> reach, std::span<const std::uint8_t> lit,
+                                     const engine::FrameLight& light, std::span<std::uint8_t> marked) const {
     constexpr int kDirections = 8;
-    RayBatch batch;
+    constexpr std::size_t kNoPath = std::numeric_limits<std::size_t>::max();
+    RayBatch toLight;
+    RayBatch paths; // from a lit receiver to its points: is the point on its side of every surface?
+    std::vector<std::size_t>
+        pathOf; // per ray to the light, its point's path (kNoPath from a shadowed receiver)
     for (std::size_t i = 0; i < positions.size(); ++i) {
-        reached[i] = 0;
+        marked[i] = 0;
         if (!(reach[i] > 0.0f)) {
             continue;
         }
@@ -223,22 +226,31 @@ void RayTracedVisibility::lightWithin(std::span<const glm::vec3> positions,
             for (int k = 0; k < kDirections; ++k) {
                 const float angle =
                     glm::two_pi<float>() * static_cast<float>(k) / static_cast<float>(kDirections);
-                const glm::vec3 origin = onSurface + distance * (std::cos(angle) * u + std::sin(angle) * v);
+                const glm::vec3 across = std::cos(angle) * u + std::sin(angle) * v;
+                const glm::vec3 origin = onSurface + distance * across;
+                pathOf.push_back(lit[i] ? paths.origins.size() : kNoPath);
+                if (lit[i]) {
+                    paths.add(onSurface, across, distance, i);
+                }
                 glm::vec3 direction = towards;
                 float segment = length;
                 if (!std::isinf(length)) {
-                    const glm::vec3 toLight = light.position - origin;
-                    segment = glm::length(toLight);
-                    direction = segment > 0.0f ? toLight / segment : towards;
+                    const glm::vec3 path = light.position - origin;
+                    segment = glm::length(path);
+                    direction = segment > 0.0f ? path / segment : towards;
                 }
-                batch.add(origin, direction, segment, i);
+                toLight.add(origin, direction, segment, i);
             }
         }
     }
-    std::vector<float> free(batch.origins.size());
-    castShadowRays(batch.origins, batch.directions, batch.lengths, free);
+    std::vector<float> free(toLight.origins.size());
+    castShadowRays(toLight.origins, toLight.directions, toLight.lengths, free);
+    std::vector<float> clear(paths.origins.size());
+    castShadowRays(paths.origins, paths.directions, paths.lengths, clear);
     for (std::size_t ray = 0; ray < free.size(); ++ray) {
-        reached[batch.pixelOf[ray]] |= static_cast<std::uint8_t>(free[ray] > 0.5f);
+        const std::size_t pixel = toLight.pixelOf[ray];
+        const bool edge = lit[pixel] ? free[ray] <= 0.5f && clear[pathOf[ray]] > 0.5f : free[ray] > 0.5f;
+        marked[pixel] |= static_cast<std::uint8_t>(edge);
     }
 }
 

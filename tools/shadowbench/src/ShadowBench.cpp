@@ -268,14 +268,16 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     plane.position = scene.light_.position;
     if (scene.classes_.empty() || scene.classifiedTexelSizes_ != accuracy.texelSizes) {
         std::vector<float> reach(scene.truth_.size(), 0.0f);
+        std::vector<std::uint8_t> lit(scene.truth_.size(), 0);
         for (std::size_t i = 0; i < reach.size(); ++i) {
-            if (scene.surfaces_[i] == Surface::Receiver && scene.truth_[i] < 0.5f) {
+            if (scene.surfaces_[i] == Surface::Receiver) {
                 reach[i] = options_.bandTexels * accuracy.texelSizes[i];
+                lit[i] = static_cast<std::uint8_t>(scene.truth_[i] >= 0.5f);
             }
         }
-        std::vector<std::uint8_t> lightWithinBand(reach.size());
-        scene.tracer_->lightWithin(scene.positions_, scene.normals_, reach, scene.light_, lightWithinBand);
-        plane.lightWithinBand = lightWithinBand;
+        std::vector<std::uint8_t> edgeWithinBand(reach.size());
+        scene.tracer_->edgeWithin(scene.positions_, scene.normals_, reach, lit, scene.light_, edgeWithinBand);
+        plane.edgeWithinBand = edgeWithinBand;
         scene.classes_ = classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandTexels);
         scene.classifiedTexelSizes_ = accuracy.texelSizes;
     }

@@ -201,10 +201,10 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
                 continue;
             }
             const bool candidate = nearLit[i] && nearDark[i];
-            const bool lightNearby = !lit(i) && !plane.lightWithinBand.empty() && plane.lightWithinBand[i];
-            classes[i] = lightNearby || (candidate && inBand(x, y)) ? PixelClass::Band
-                         : lit(i)                                   ? PixelClass::Lit
-                                                                    : PixelClass::Shadowed;
+            const bool edgeNearby = !plane.edgeWithinBand.empty() && plane.edgeWithinBand[i];
+            classes[i] = edgeNearby || (candidate && inBand(x, y)) ? PixelClass::Band
+                         : lit(i)                                  ? PixelClass::Lit
+                                                                   : PixelClass::Shadowed;
         }
     }
     return classes;

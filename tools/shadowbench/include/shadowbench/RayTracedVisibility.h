@@ -42,15 +42,17 @@ public:
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light, float radius,
                         int samplesPerAxis, std::span<float> visibility) const;
 
-    /// @brief Whether the light reaches near each point with `reach[i] > 0`, across its rays: 1 where one of
-    /// 16 hard shadow rays, started `reach[i]` or half of it from the point in 8 directions perpendicular to
-    /// its ray to the light (offset off the surface as in hardVisibility), is free. A shadowed point so
-    /// marked lies within `reach[i]` of its shadow's edge in the light's view, or under a caster narrower
-    /// than that, even where the lit side is hidden from the camera. Rays started under the surface meet it
-    /// and count as blocked.
-    void lightWithin(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
-                     std::span<const float> reach, const engine::FrameLight& light,
-                     std::span<std::uint8_t> reached) const;
+    /// @brief Whether the edge of the shadow lies near each point with `reach[i] > 0`, across the light's
+    /// rays: 1 where one of 16 points, `reach[i]` or half of it from the point (offset off the surface as in
+    /// hardVisibility) in 8 directions perpendicular to its ray to the light, sees the light otherwise than
+    /// `lit[i]` says the point does. A point so marked lies within `reach[i]` of its shadow's edge in the
+    /// light's view, even where the other side is hidden from the camera: a shadowed one also under a caster
+    /// narrower than that (a thin fin, the foot of a thin wall). From a lit point only the points it reaches
+    /// by a free segment count: the others lie under its own surface, which shadows them, or inside a solid
+    /// it meets in a concave crease, where no shadow of this receiver's has an edge.
+    void edgeWithin(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
+                    std::span<const float> reach, std::span<const std::uint8_t> lit,
+                    const engine::FrameLight& light, std::span<std::uint8_t> marked) const;
     /// @brief Sizes the ray offsets by the distance from `eye` (see hardVisibility).
     void setViewer(const glm::vec3& eye) { viewer_ = eye; }
 

@@ -74,10 +74,10 @@ struct LightPlane {
     bool directional = true;
     glm::vec3 direction{0.0f, -1.0f, 0.0f};
     glm::vec3 position{0.0f};
-    /// Per pixel, where given: whether the light reaches within the band of it across its rays, anywhere, not
-    /// only at the image's pixels (RayTracedVisibility::lightWithin); a dark receiver so marked is in the
-    /// band.
-    std::span<const std::uint8_t> lightWithinBand{};
+    /// Per pixel, where given: whether its shadow's edge lies within the band of it across the light's rays,
+    /// anywhere, not only at the image's pixels (RayTracedVisibility::edgeWithin); a receiver so marked is in
+    /// the band.
+    std::span<const std::uint8_t> edgeWithinBand{};
 
     /// @brief How far pixel `j` lies from pixel `i` across the light's rays, in shadow texels at `i`: the
     /// distance between the two rays (a spot or point light's: at `i`'s distance from it); infinite when `i`
@@ -88,8 +88,8 @@ struct LightPlane {
 /// @brief Per-pixel classes of the receivers (`surfaces`); a receiver is in the band when a pixel of the
 /// other truth (a receiver's truth thresholded at 0.5; a surface facing away is dark) is one of its 8
 /// neighbours, or lies within `bandTexels` shadow texels of it across the light's rays (`plane`) and within
-/// `windowPixels` pixels of it on screen (the search's reach); a dark receiver is also in the band where
-/// `plane.lightWithinBand` marks it (the lit side of its edge may be hidden from the camera).
+/// `windowPixels` pixels of it on screen (the search's reach); a receiver is also in the band where
+/// `plane.edgeWithinBand` marks it (the other side of its edge may be hidden from the camera).
 std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
                                  std::span<const Surface> surfaces, const LightPlane& plane, float bandTexels,
                                  int windowPixels = 32);
