@@ -44,7 +44,7 @@ TEST(ShadowMapArrayGLTest, StoredGradientsAddAnRgTarget) {
     EXPECT_EQ(target.bytes(plan), 64u * 64u * (4u + 8u));
 }
 
-TEST(ShadowMapArrayGLTest, MomentsAreMipmappedInThePlansFormatAndSampled) {
+TEST(ShadowMapArrayGLTest, MomentsHaveOneLevelInThePlansFormatAndAreSampled) {
     glTestContext();
     ShadowSettings settings;
     settings.technique = ShadowTechnique::Msm;
@@ -55,9 +55,11 @@ TEST(ShadowMapArrayGLTest, MomentsAreMipmappedInThePlansFormatAndSampled) {
     ASSERT_TRUE(target.moments && target.blurTemporary);
     EXPECT_EQ(target.moments->internalFormat(), static_cast<GLenum>(GL_RGBA16));
     EXPECT_EQ(target.sampledTexture(), target.moments->id());
-    EXPECT_EQ(textureLevelParameter(target.moments->id(), 6, GL_TEXTURE_WIDTH), 1); // 64 .. 1: seven levels
-    // Per layer the depth and the mip chain (4/3 of level 0); one temporary layer for the blur.
-    EXPECT_EQ(target.bytes(plan), 2u * (64u * 64u * 4u + 64u * 64u * 8u * 4u / 3u) + 64u * 64u * 8u);
+    // No mip chain: the lookups read the first level only (receiver.glsl, gsShadowMoments).
+    EXPECT_EQ(textureLevelParameter(target.moments->id(), 0, GL_TEXTURE_WIDTH), 64);
+    EXPECT_EQ(textureLevelParameter(target.moments->id(), 1, GL_TEXTURE_WIDTH), 0);
+    // Per layer the depth and the moments; one temporary layer for the blur.
+    EXPECT_EQ(target.bytes(plan), 2u * (64u * 64u * 4u + 64u * 64u * 8u) + 64u * 64u * 8u);
 }
 
 TEST(ShadowMapArrayGLTest, UnblurredMomentsHaveNoBlurTemporary) {
@@ -70,5 +72,5 @@ TEST(ShadowMapArrayGLTest, UnblurredMomentsHaveNoBlurTemporary) {
     const ShadowMapArray target(64, 1, plan);
     ASSERT_TRUE(target.moments);
     EXPECT_FALSE(target.blurTemporary || target.blurFramebuffer);
-    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 8u * 4u / 3u); // RG32F moments and their mips
+    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 8u); // D24 depth and RG32F moments
 }

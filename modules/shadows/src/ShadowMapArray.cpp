@@ -6,27 +6,15 @@
 
 namespace shadows {
 
-namespace {
-
-GLsizei mipLevels(int resolution) {
-    GLsizei levels = 1;
-    while ((resolution >> levels) > 0) {
-        ++levels;
-    }
-    return levels;
-}
-
-} // namespace
-
 ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& plan)
     : depth(plan.depthFormat, glm::ivec2(resolution), layers) {
     const glm::ivec2 size(resolution);
     if (plan.storesGradient) {
         gradient.emplace(GL_RG32F, size, layers);
     } else if (plan.momentsFormat != 0) {
-        // Moments are filtered: blurred at level 0 when the settings ask for it, then mipmapped for trilinear
-        // lookups.
-        moments.emplace(plan.momentsFormat, size, layers, mipLevels(resolution));
+        // Moments are filtered: blurred when the settings ask for it, then read bilinearly at their one level
+        // (no mip chain: receiver.glsl, gsShadowMoments).
+        moments.emplace(plan.momentsFormat, size, layers);
         if (plan.blursMoments) {
             blurTemporary.emplace(plan.momentsFormat, size, 1);
             blurFramebuffer.emplace("shadow moments blur");
@@ -65,7 +53,7 @@ std::size_t ShadowMapArray::bytes(const ShadowPlan& plan) const {
     const auto count = static_cast<std::size_t>(layers());
     std::size_t layer = texels * (plan.depthBytesPerTexel + (gradient ? 8 : 0));
     if (moments) {
-        layer += texels * plan.momentBytesPerTexel * 4 / 3; // the mip chain: 4/3 of level 0
+        layer += texels * plan.momentBytesPerTexel;
     }
     std::size_t total = count * layer;
     if (blurTemporary) {

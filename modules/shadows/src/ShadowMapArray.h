@@ -17,7 +17,7 @@ namespace shadows {
 struct ShadowMapArray {
     ShadowMapArray(int resolution, int layers, const ShadowPlan& plan);
 
-    /// @brief GPU memory of these targets, bytes (the moments' mip chain counts 4/3 of level 0).
+    /// @brief GPU memory of these targets, bytes.
     [[nodiscard]] std::size_t bytes(const ShadowPlan& plan) const;
     /// @brief The texture the lighting pass samples: the moments where there are some, else the depth.
     [[nodiscard]] GLuint sampledTexture() const;

@@ -276,16 +276,9 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
-    if (plan_.momentsFormat != 0) {
-        filterMoments();
-    }
-}
-
-void ShadowModule::filterMoments() {
     if (plan_.blursMoments) {
         blurMoments();
     }
-    glGenerateTextureMipmap(maps_->moments->id());
 }
 
 void ShadowModule::blurMoments() {

@@ -26,8 +26,7 @@ engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filte
 ShadowSamplers::ShadowSamplers()
     : compareNearest_(makeSampler(GL_NEAREST, true)), compareLinear_(makeSampler(GL_LINEAR, true)),
       depthLinear_(makeSampler(GL_LINEAR, false)), moments_(makeSampler(GL_LINEAR, false)) {
-    // Trilinear over the mip chain; edges clamp (a quantised border would not be "far").
-    glSamplerParameteri(moments_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    // Bilinear (the moments have one level); edges clamp (a quantised border would not be "far").
     glSamplerParameteri(moments_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(moments_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }

@@ -153,8 +153,8 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .biasesDepth = true},
     {.technique = T::Vsm,
      .name = "vsm",
-     .summary = "moments (z, z²) in RG32F, separable box blur (`momentBlurRadius`), mipmaps, trilinear "
-                "lookup, Chebyshev bound with `vsmMinimumVariance`, `lightBleedingReduction` and the early "
+     .summary = "moments (z, z²) in RG32F, separable box blur (`momentBlurRadius`), bilinear lookup, "
+                "Chebyshev bound with `vsmMinimumVariance`, `lightBleedingReduction` and the early "
                 "return where the mean is beyond the receiver",
      .reference = "advanced shadow mapping reference, \"Variance Shadow Maps\"",
      .sampler = S::Moments,

@@ -92,8 +92,7 @@ private:
     };
 
     void releaseResources();
-    /// Blurs the moments when the plan asks for it, then mipmaps them.
-    void filterMoments();
+    /// Blurs the moments (ShadowPlan::blursMoments).
     void blurMoments();
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
     void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit);

@@ -34,12 +34,12 @@ struct ShadowPlan {
     std::size_t depthBytesPerTexel = 4;
     /// The dz/dxy target of stored derivatives (RG32F), when a technique reads them.
     bool storesGradient = false;
-    /// Format of the filtered moments target (blurred, mipmapped), 0 when the technique stores none.
+    /// Format of the filtered moments target (blurred where asked), 0 when the technique stores none.
     GLenum momentsFormat = 0;
     /// The moments are box-blurred (momentBlurRadius > 0): the blur's temporary layer and passes exist only
     /// then.
     bool blursMoments = false;
-    /// Bytes of one moments texel at mip level 0.
+    /// Bytes of one moments texel.
     std::size_t momentBytesPerTexel = 0;
     /// What empty moments texels hold: the far plane's moments in the stored basis.
     glm::vec4 momentsClear{1.0f};

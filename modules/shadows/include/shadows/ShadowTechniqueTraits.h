@@ -25,7 +25,7 @@ enum class ShadowTechnique {
     PcfGsmNearer,          ///< PCF over GSM, each tap at the nearer of the point and average predictions
     ReceiverPlaneBias,     ///< 10. receiver-plane depth bias from screen derivatives
     NormalOffset,          ///< 11. receiver pushed along its normal, one hardware comparison
-    Vsm,                   ///< variance shadow map: blurred, mipmapped (z, z²), Chebyshev bound
+    Vsm,                   ///< variance shadow map: (z, z²), Chebyshev bound
     Msm,          ///< moment shadow map: 4 moments, Hamburger bound (32-bit float or 16-bit quantised)
     Evsm,         ///< exponential variance shadow map: two warped depths and their squares, Chebyshev on each
     JitteredPcf,  ///< PCF over a stratified jitter texture, optional early-out on a few test taps
@@ -42,13 +42,13 @@ enum class MapSampler {
     CompareNearest, ///< sampler2DShadow, one hardware comparison per lookup
     CompareLinear,  ///< sampler2DShadow with LINEAR filtering: hardware 2x2 PCF
     DepthLinear,    ///< sampler2D returning linearly filtered depth (GSM, gathers)
-    Moments,        ///< trilinear sampler2D over the blurred, mipmapped moments target (VSM, MSM)
+    Moments,        ///< bilinear sampler2D over the moments target (VSM, MSM)
 };
 
 struct ShadowSettings;
 
-/// @brief The filtered moments a technique's shadow pass stores per texel besides the depth buffer: blurred,
-/// mipmapped, and read through MapSampler::Moments.
+/// @brief The filtered moments a technique's shadow pass stores per texel besides the depth buffer: blurred
+/// where asked, and read through MapSampler::Moments.
 struct MomentStore {
     /// Depth-pass define under which the technique's file defines gsShadowStore(depth).
     std::string_view define;

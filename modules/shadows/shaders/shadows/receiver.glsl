@@ -25,8 +25,6 @@ uniform float gsTapFitRows[6 * GS_MAX_TAPS];
 struct GsShadowLookup {
     int slot;            // the map (layer of gsShadowMaps)
     vec2 coord;          // shadow texture coordinates
-    vec2 coordDx;        // their screen derivatives (explicit: a pixel quad may span maps)
-    vec2 coordDy;
     vec2 texel;          // the coordinates in texels
     float depth;         // receiver depth in the map's [0,1] range
     float momentDepth;   // the same as the moments store it (gsLinearDepth)
@@ -91,16 +89,14 @@ float gsShadowDepthAt(int slot, vec2 texel) {
 // The 2x2 depths around `coord` (textureGather order).
 vec4 gsShadowGather(int slot, vec2 coord) { return textureGather(gsShadowMaps, vec3(coord, float(slot))); }
 
-// Filtered moments under the lookup, trilinear over the mip chain with the lookup's own derivatives, each
-// capped at 2 texels: the blur has already filtered the moments over its width, and a receiver seen at a grazing
-// angle has a footprint hundreds of texels long, whose mip level mixes a caster's moments into a lit ground
-// far from its shadow, which Chebyshev's bound reads as partial occlusion (the spheres' lit ground darkened by
-// 3.7e-4 uncapped, 1.1e-5 capped, vsm at defaults).
+// Filtered moments under the lookup: bilinear at the one level the map has. The blur, where asked for, has
+// filtered them over its width; a mip level as wide as the lookup's footprint mixes a caster's moments into
+// receivers beside its shadow, which Chebyshev's and Hamburger's bounds read as partial occlusion or light. With
+// the footprint capped at 2 texels `terrain` under a 1-5° sun still leaked (`vsm` 58 pixels in 4 of 126 Defaults
+// views, `msm` 30 in 3), uncapped the spheres' lit ground darkened 3.7e-4; at one texel, where no level but the
+// first is read, none (docs/SHADOWS.md, "No mip chain for the moments").
 vec4 gsShadowMoments(GsShadowLookup lookup) {
-    float cap = 2.0 / gsShadowTexel[lookup.slot].x;
-    vec2 dx = lookup.coordDx * min(1.0, cap / max(length(lookup.coordDx), 1e-20));
-    vec2 dy = lookup.coordDy * min(1.0, cap / max(length(lookup.coordDy), 1e-20));
-    return textureGrad(gsShadowMaps, vec3(lookup.coord, float(lookup.slot)), dx, dy);
+    return textureLod(gsShadowMaps, vec3(lookup.coord, float(lookup.slot)), 0.0);
 }
 #endif
 
@@ -193,12 +189,10 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         return 1.0; // beyond the map's depth range: nothing can occlude
     }
     lookup.momentDepth = gsLinearDepth(lookup.depth, gsShadowDepthRange[slot].xy);
-    vec3 dx = gsShadowDerivative(m, clip, fragment.dPdx);
-    vec3 dy = gsShadowDerivative(m, clip, fragment.dPdy);
-    lookup.coordDx = dx.xy;
-    lookup.coordDy = dy.xy;
     lookup.screenGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
+    vec3 dx = gsShadowDerivative(m, clip, fragment.dPdx);
+    vec3 dy = gsShadowDerivative(m, clip, fragment.dPdy);
     lookup.screenGradient =
         gsReceiverPlaneGradient(dx.xy * gsShadowTexel[slot].x, dy.xy * gsShadowTexel[slot].x, dx.z, dy.z);
 #endif
