@@ -207,9 +207,10 @@ void RayTracedVisibility::edgeWithin(std::span<const glm::vec3> positions, std::
     constexpr int kDirections = 8;
     constexpr std::size_t kNoPath = std::numeric_limits<std::size_t>::max();
     RayBatch toLight;
-    RayBatch paths; // from a lit receiver to its points: is the point on its side of every surface?
-    std::vector<std::size_t>
-        pathOf; // per ray to the light, its point's path (kNoPath from a shadowed receiver)
+    // From a lit receiver to each of its points: is the point on the receiver's side of every surface?
+    RayBatch paths;
+    // Per ray to the light, its point's path (kNoPath from a shadowed receiver).
+    std::vector<std::size_t> pathOf;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         marked[i] = 0;
         if (!(reach[i] > 0.0f)) {
