@@ -61,7 +61,7 @@ enum class ShadowDebugView {
 struct ShadowSettings {
     /// Visibility function; the default is the most accurate per millisecond on the real corpus
     /// (docs/RESULTS.md, "Defaults").
-    ShadowTechnique technique = ShadowTechnique::SlopeScaledBias;
+    ShadowTechnique technique = ShadowTechnique::Evsm;
     /// Width and height of each shadow map, texels.
     int resolution = 2048;
     /// Depth format of the shadow maps.
