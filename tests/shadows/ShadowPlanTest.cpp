@@ -37,6 +37,24 @@ TEST(ShadowPlanTest, DefinesFollowOptionsOnlyWhereTheyApply) {
     EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_STORE_GRADIENT"));
 }
 
+TEST(ShadowPlanTest, TheAverageGradientsCircular8FormsReadNoPointGradient) {
+    // They fit their own gradient from the 8 taps: no gradient source applies, and none is computed or
+    // stored.
+    ShadowSettings settings;
+    settings.technique = ShadowTechnique::PcfGsmAverageGradient;
+    settings.gradientSource = GradientSource::StoredDerivatives;
+    EXPECT_TRUE(ShadowPlan::resolve(settings).readsPointGradient);
+    EXPECT_TRUE(ShadowPlan::resolve(settings).storesGradient);
+    for (const AverageGradientForm form :
+         {AverageGradientForm::Circular8, AverageGradientForm::Circular8Vec4}) {
+        settings.averageGradientForm = form;
+        const ShadowPlan plan = ShadowPlan::resolve(settings);
+        EXPECT_FALSE(plan.readsPointGradient);
+        EXPECT_FALSE(plan.storesGradient);
+        EXPECT_FALSE(has(plan.lightingDefines, "GS_SHADOW_GRADIENT_STORED"));
+    }
+}
+
 TEST(ShadowPlanTest, ReceiverPlanePerTapComparesInHardwareOverThePattern) {
     ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::ReceiverPlaneBias};
     EXPECT_EQ(ShadowPlan::resolve(settings).sampler, MapSampler::DepthLinear);

@@ -40,7 +40,7 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
     if (plan.sampler == MapSampler::CompareNearest || plan.sampler == MapSampler::CompareLinear) {
         defines.push_back("GS_SHADOW_SAMPLER_COMPARE");
     }
-    if (plan.traits->readsPointGradient) {
+    if (plan.readsPointGradient) {
         constexpr std::string_view kGradientDefines[] = {
             "GS_SHADOW_GRADIENT_STORED", "GS_SHADOW_GRADIENT_CENTRAL", "GS_SHADOW_GRADIENT_SCREEN"};
         defines.push_back(kGradientDefines[static_cast<std::size_t>(settings.gradientSource)]);
@@ -97,8 +97,11 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
             plan.lightingDefines.push_back(define);
         }
     }
+    plan.readsPointGradient = plan.traits->readsPointGradient &&
+                              !(settings.technique == ShadowTechnique::PcfGsmAverageGradient &&
+                                settings.averageGradientForm != AverageGradientForm::LeastSquares);
     plan.storesGradient =
-        plan.traits->readsPointGradient && settings.gradientSource == GradientSource::StoredDerivatives;
+        plan.readsPointGradient && settings.gradientSource == GradientSource::StoredDerivatives;
     if (plan.storesGradient) {
         plan.depthDefines.push_back("GS_SHADOW_STORE_GRADIENT");
     }

@@ -51,7 +51,7 @@ bool biasesDepth(const S& s) {
     return traitsOf(s.technique).biasesDepth;
 }
 bool readsPointGradient(const S& s) {
-    return traitsOf(s.technique).readsPointGradient;
+    return ShadowPlan::resolve(s).readsPointGradient;
 }
 bool comparesInHardware(const S& s) {
     const MapSampler sampler = ShadowPlan::resolve(s).sampler;

@@ -23,6 +23,10 @@ struct ShadowPlan {
     MapSampler sampler = MapSampler::CompareNearest;
     /// Whether the tap pattern is used (the receiver-plane per-tap kernel uses it too).
     bool usesTapPattern = false;
+    /// Whether the lighting pass reads the fragment's depth gradient (ShadowSettings::gradientSource
+    /// applies): the technique's trait, but not the average gradient's circular-8 forms, which compute their
+    /// own.
+    bool readsPointGradient = false;
     /// Lighting-pass defines: GS_SHADOWS, the technique's, its options' and the debug view's.
     std::vector<std::string_view> lightingDefines;
     /// Depth-pass defines: what the pass stores besides depth.
