@@ -97,9 +97,7 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
             plan.lightingDefines.push_back(define);
         }
     }
-    plan.readsPointGradient = plan.traits->readsPointGradient &&
-                              !(settings.technique == ShadowTechnique::PcfGsmAverageGradient &&
-                                settings.averageGradientForm != AverageGradientForm::LeastSquares);
+    plan.readsPointGradient = plan.traits->readsPointGradient && !settings.usesCircular8Average();
     plan.storesGradient =
         plan.readsPointGradient && settings.gradientSource == GradientSource::StoredDerivatives;
     if (plan.storesGradient) {

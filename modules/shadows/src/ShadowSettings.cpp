@@ -34,9 +34,12 @@ std::vector<std::string> ShadowSettings::validate() const {
 }
 
 TapPattern ShadowSettings::tapPattern() const {
-    const bool circular = averageGradientForm != AverageGradientForm::LeastSquares &&
-                          technique == ShadowTechnique::PcfGsmAverageGradient;
-    return TapPattern::make(circular ? TapLayout::Circular8 : pcfLayout, pcfTaps, pcfRadius);
+    return TapPattern::make(usesCircular8Average() ? TapLayout::Circular8 : pcfLayout, pcfTaps, pcfRadius);
+}
+
+bool ShadowSettings::usesCircular8Average() const {
+    return technique == ShadowTechnique::PcfGsmAverageGradient &&
+           averageGradientForm != AverageGradientForm::LeastSquares;
 }
 
 } // namespace shadows

@@ -38,8 +38,7 @@ bool usesTaps(const S& s) {
 }
 /// The circular-8 forms of the average gradient bring their own 8-tap layout (ShadowSettings::tapPattern).
 bool layoutForced(const S& s) {
-    return s.technique == T::PcfGsmAverageGradient &&
-           s.averageGradientForm != AverageGradientForm::LeastSquares;
+    return s.usesCircular8Average();
 }
 bool offsetsCasters(const S& s) {
     return traitsOf(s.technique).offsetsCasters;

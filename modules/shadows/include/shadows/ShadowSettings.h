@@ -141,6 +141,9 @@ struct ShadowSettings {
     [[nodiscard]] std::vector<std::string> validate() const;
     /// @brief The tap pattern these settings select (Circular8 forms force the Circular8 layout).
     [[nodiscard]] TapPattern tapPattern() const;
+    /// @brief Whether the average gradient runs in a circular-8 form: its own 8-tap layout and its own
+    /// gradient, fitted from those taps.
+    [[nodiscard]] bool usesCircular8Average() const;
 
     /// @brief Field-wise equality.
     bool operator==(const ShadowSettings&) const = default;
