@@ -117,7 +117,7 @@ for count in 2 3 4; do
     done
 done
 cascades+=(--config "c4-w0.9-unsnapped:cascadeCount=4,cascadeSplitWeight=0.9,texelSnapping=false")
-"$bench" --scene outdoor --techniques normal-offset --resolutions 2048 --frames 5 --shimmer 8 "${cascades[@]}" \
+"$bench" --scene outdoor --techniques default --resolutions 2048 --frames 5 --shimmer 8 "${cascades[@]}" \
     --peer "$work/osg" --out "$work/outdoor-cascades"
 "$bench" --defaults --scene outdoor --scene room --frames 5 --out "$work/every-light"
 

@@ -31,6 +31,13 @@ grep -q '"renderedToTrue"' "$out/sweep/results.json" || fail "results.json lacks
 "$bench" --light-sweep 30:95 --out "$out/x" > "$out.bad" 2>&1
 [[ $? -eq 2 ]] && grep -q "elevation" "$out.bad" || fail "elevation above 90° not refused"
 
+# "default" names the module's default technique: one row, under that technique's own name.
+"$bench" --scene knob --techniques default --defaults --accuracy-only --size 48x36 --out "$out/default" \
+    > "$out.default.log" 2>&1 || fail "--techniques default exited $?: $(cat "$out.default.log")"
+[[ $(($(wc -l < "$out/default/results.csv") - 1)) -eq 1 ]] || fail "--techniques default: expected 1 row"
+grep -Eq '^knob,([a-z-]+),\1,' "$out/default/results.csv" && ! grep -q ',default,' "$out/default/results.csv" ||
+    fail "--techniques default did not run a named technique"
+
 "$bench" --techniques nonsense --out "$out/x" > "$out.bad" 2>&1
 [[ $? -eq 2 ]] && grep -q "unknown technique 'nonsense'" "$out.bad" || fail "unknown technique not refused"
 "$bench" --config "x:pcfTaps=99" --out "$out/x" > "$out.bad" 2>&1

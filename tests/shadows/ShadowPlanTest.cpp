@@ -121,6 +121,24 @@ TEST(ShadowPlanTest, AdaptiveBiasTakesTheNearestComparisonsNormalOffset) {
     }
 }
 
+TEST(ShadowPlanTest, TheTechniquesExactForAPlaneLiftTheReceiverForReliefWithinATexel) {
+    for (const ShadowTechnique technique :
+         {ShadowTechnique::NormalOffset, ShadowTechnique::AdaptiveBias, ShadowTechnique::PcfAdaptiveBias}) {
+        ShadowSettings settings = ShadowSettings{.technique = technique};
+        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 0.25f);
+        settings.constantBiasTexels = 1.0f; // the user's constant bias adds to it
+        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 1.25f);
+        settings.footprintNormalOffset = false; // the reference's form: only the user's
+        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 1.0f);
+    }
+    // The others have a margin of their own; the naive reproduction has none unless asked for.
+    for (const ShadowTechnique technique :
+         {ShadowTechnique::HardCompare, ShadowTechnique::SlopeScaledBias, ShadowTechnique::Gsm,
+          ShadowTechnique::Pcf, ShadowTechnique::Vsm}) {
+        EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{.technique = technique}).constantBiasTexels, 0.0f);
+    }
+}
+
 TEST(ShadowPlanTest, TheFootprintNormalOffsetCanBeTurnedOffLeavingOnlyTheMargin) {
     ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::PcfGsmPointGradient};
     EXPECT_NEAR(ShadowPlan::resolve(settings).normalOffsetTexels, 0.70710678f, 1e-6f);

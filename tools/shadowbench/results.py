@@ -458,10 +458,15 @@ def pcf_over_gsm_section(views):
 
 
 def every_light_section(cascades, every):
+    # Every configuration of the cascade run starts from the module's defaults (results.sh: --techniques default).
+    ours = {r["settings"]["technique"] for r in cascades["results"] if not r["peer"]}
+    if len(ours) != 1:
+        raise SystemExit(f"the cascade run mixes techniques {sorted(ours)}; it should run the default only")
+    default_technique = ours.pop()
     out.append("## Every light: cascades and point lights\n")
     out.append(f"The 4 km outdoor scene (content/scenes/outdoor.gltf: camera 1.8 m above the ground looking at the "
                f"horizon, near 0.3 m, far 5 km; sun 30° high), {cascades['width']}x{cascades['height']}, 2048² maps, "
-               "the default technique (`normal-offset`) with 1-4 cascades and several split weights, against the "
+               f"the default technique (`{default_technique}`) with 1-4 cascades and several split weights, against the "
                "ray-traced truth (rays towards the sun). `automatic` is the default (`cascadeCount` 0). Shimmer: the "
                "fraction of receiver pixels whose visibility changes by more than 0.5 between frames while the view "
                f"the maps are fitted to moves a third of a texel per frame for {cascades['shimmerFrames']} frames and the observer stays "

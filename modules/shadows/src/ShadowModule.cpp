@@ -384,7 +384,7 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
     block.tapInverseCovariance[0] = glm::vec4(pattern_.inverseCovariance[0], 0.0f, 0.0f);
     block.tapInverseCovariance[1] = glm::vec4(pattern_.inverseCovariance[1], 0.0f, 0.0f);
     block.techniqueParameters = plan_.shaderParameters;
-    block.constantBiasTexels = settings_.constantBiasTexels;
+    block.constantBiasTexels = plan_.constantBiasTexels;
     block.depthStep = depthStep(settings_.depthFormat);
     block.fuzzyScale = settings_.fuzzyScale;
     block.normalOffset = plan_.normalOffsetTexels;

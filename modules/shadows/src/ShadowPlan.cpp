@@ -108,6 +108,8 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
             (settings.footprintNormalOffset ? plan.traits->footprintTexels(settings) : 0.0f) +
             settings.normalOffsetTexels;
     }
+    plan.constantBiasTexels =
+        settings.constantBiasTexels + (settings.footprintNormalOffset ? plan.traits->reliefLiftTexels : 0.0f);
     addOptionDefines(settings, plan);
     if (const MomentStore& moments = plan.traits->moments; moments.format) {
         plan.momentsFormat = moments.format(settings);

@@ -96,7 +96,8 @@ const std::vector<SettingRow>& rows() {
          choice<CasterFaces, &S::casterFaces>(), always},
         {"constantBiasTexels", "texels", "constant bias",
          "Receiver moved towards the light before the comparison, in shadow texel sizes at the receiver (so "
-         "one value holds at any scene scale and map size). 0: none, as the naive `hard` has it.",
+         "one value holds at any scene scale and map size), on top of the technique's own lift for relief. 0 "
+         "(the default) adds none, so the naive `hard` has no bias.",
          FloatSetting{&S::constantBiasTexels, {.max = 64.0f}, 0.0f, 16.0f, "%.3f"}, always},
         {"slopeScale", "", "slope scale", "glPolygonOffset factor on the casters (scales their depth slope).",
          FloatSetting{&S::slopeScale, {}, 0.0f, 8.0f, "%.2f"}, offsetsCasters},
@@ -138,8 +139,9 @@ const std::vector<SettingRow>& rows() {
         {"footprintNormalOffset", "", "normal offset by the footprint",
          "Push the receiver along its normal by the comparison's footprint (half a texel diagonal for one "
          "NEAREST or linearly filtered fetch, a diagonal for 2x2 bilinear PCF) times the sine of its angle "
-         "to the light (docs/SHADOWS.md, \"Automatic bias\"). Off: only normalOffsetTexels, as the "
-         "references' techniques have it.",
+         "to the light (docs/SHADOWS.md, \"Automatic bias\"); normal-offset, adaptive-bias and "
+         "pcf-adaptive-bias also move it a quarter texel towards the light. Off: only normalOffsetTexels "
+         "and constantBiasTexels, as the references' techniques have it.",
          BoolSetting{&S::footprintNormalOffset}, offsetsAlongNormal},
         {"normalOffsetTexels", "texels", "normal offset margin",
          "Margin beyond the comparison's footprint: the receiver is pushed along its normal by "

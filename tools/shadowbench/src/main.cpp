@@ -24,7 +24,8 @@ namespace {
 
 constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --scene NAME|FILE     content scene name or glTF path (repeatable)         [knob]
-  --techniques LIST     comma-separated technique names, or "all"          [all]
+  --techniques LIST     comma-separated technique names ("default": the module's default), or
+                        "all"                                               [all]
   --taps LIST           PCF taps per side (grid) to sweep, e.g. 2,4,6       [4]
   --radius TEXELS       PCF radius in texels                                [1.5]
   --resolutions LIST    shadow map sizes, e.g. 512,1024                     [1024]
@@ -116,7 +117,8 @@ Options parse(int argc, char** argv) {
             if (list != "all") {
                 options.techniques.clear();
                 for (const std::string& name : splitList(list)) {
-                    const auto technique = shadows::techniqueFromString(name);
+                    const auto technique = name == "default" ? shadows::ShadowSettings{}.technique
+                                                             : shadows::techniqueFromString(name);
                     if (!technique) {
                         usageError("--techniques: unknown technique '" + name + "'");
                     }

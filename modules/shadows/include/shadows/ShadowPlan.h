@@ -56,6 +56,9 @@ struct ShadowPlan {
     /// Texel sizes the receiver is pushed along its normal (times the sine of its angle to the light): the
     /// technique's footprint plus normalOffsetTexels; 0 for techniques without a footprint.
     float normalOffsetTexels = 0.0f;
+    /// Texel sizes the receiver is moved towards the light: constantBiasTexels plus the technique's relief
+    /// lift where the footprint offset is on.
+    float constantBiasTexels = 0.0f;
     /// Depth units the comparison depth is lowered by (depthBiasSteps format steps; 0 unless the technique
     /// biasesDepth), but no less than depthBiasFloor.
     float depthBias = 0.0f;
