@@ -121,20 +121,23 @@ TEST(ShadowPlanTest, AdaptiveBiasTakesTheNearestComparisonsNormalOffset) {
     }
 }
 
-TEST(ShadowPlanTest, TheTechniquesExactForAPlaneLiftTheReceiverForReliefWithinATexel) {
+TEST(ShadowPlanTest, TechniquesComparingAlongTheReceiversPlaneLiftItForReliefWithinATexel) {
     for (const ShadowTechnique technique :
-         {ShadowTechnique::NormalOffset, ShadowTechnique::AdaptiveBias, ShadowTechnique::PcfAdaptiveBias}) {
+         {ShadowTechnique::NormalOffset, ShadowTechnique::AdaptiveBias, ShadowTechnique::PcfAdaptiveBias,
+          ShadowTechnique::Gsm, ShadowTechnique::PcfGsmPointGradient, ShadowTechnique::PcfGsmAverageGradient,
+          ShadowTechnique::PcfGsmQuadratic, ShadowTechnique::PcfGsmNearer,
+          ShadowTechnique::PcfGsmConnected}) {
         ShadowSettings settings = ShadowSettings{.technique = technique};
-        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 0.25f);
+        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 0.5f);
         settings.constantBiasTexels = 1.0f; // the user's constant bias adds to it
-        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 1.25f);
+        EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 1.5f);
         settings.footprintNormalOffset = false; // the reference's form: only the user's
         EXPECT_EQ(ShadowPlan::resolve(settings).constantBiasTexels, 1.0f);
     }
-    // The others have a margin of their own; the naive reproduction has none unless asked for.
+    // The others have a margin of their own; the naive reproductions have none unless asked for.
     for (const ShadowTechnique technique :
-         {ShadowTechnique::HardCompare, ShadowTechnique::SlopeScaledBias, ShadowTechnique::Gsm,
-          ShadowTechnique::Pcf, ShadowTechnique::Vsm}) {
+         {ShadowTechnique::HardCompare, ShadowTechnique::PcfGsmNaive, ShadowTechnique::SlopeScaledBias,
+          ShadowTechnique::Pcf, ShadowTechnique::HardwarePcf, ShadowTechnique::Vsm}) {
         EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{.technique = technique}).constantBiasTexels, 0.0f);
     }
 }

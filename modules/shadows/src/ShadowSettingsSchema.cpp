@@ -139,9 +139,10 @@ const std::vector<SettingRow>& rows() {
         {"footprintNormalOffset", "", "normal offset by the footprint",
          "Push the receiver along its normal by the comparison's footprint (half a texel diagonal for one "
          "NEAREST or linearly filtered fetch, a diagonal for 2x2 bilinear PCF) times the sine of its angle "
-         "to the light (docs/SHADOWS.md, \"Automatic bias\"); normal-offset, adaptive-bias and "
-         "pcf-adaptive-bias also move it a quarter texel towards the light. Off: only normalOffsetTexels "
-         "and constantBiasTexels, as the references' techniques have it.",
+         "to the light (docs/SHADOWS.md, \"Automatic bias\"); those comparing along the receiver's "
+         "plane at one fetch (normal-offset, the adaptive bias, GSM and PCF over GSM) also move it half a "
+         "texel towards the light. Off: only normalOffsetTexels and constantBiasTexels, as the references' "
+         "techniques have it.",
          BoolSetting{&S::footprintNormalOffset}, offsetsAlongNormal},
         {"normalOffsetTexels", "texels", "normal offset margin",
          "Margin beyond the comparison's footprint: the receiver is pushed along its normal by "

@@ -21,12 +21,14 @@ using S = MapSampler;
 // ShadowSettings::footprintNormalOffset turns these offsets off, for the references' own forms.
 constexpr float kNearestReach = 0.70710678f;
 constexpr float kBilinearReach = 1.41421356f;
-// The techniques whose one NEAREST comparison is exact for a plane (the normal offset's, the tangent plane's)
-// have no margin for relief within the texel, where slope-scaled has its slope factor's, GSM its fuzzy band
-// and the filtered ones a footprint wider than a NEAREST comparison's: on `terrain`'s creases they kept 8-54
-// acne pixels per view. A quarter texel towards the light was the least of 0.25 and 0.5 that met the floor in
-// every Defaults view (docs/SHADOWS.md, "Automatic bias").
-constexpr float kReliefLift = 0.25f;
+// Relief within a texel (a crease, where the neighbouring facet rises in front of the receiver's plane) is
+// what the half-diagonal offset cannot clear for the techniques that compare at one NEAREST or filtered fetch
+// along the receiver's plane: the normal offset's, the tangent plane's, GSM's gradient band (zero wide where
+// the receiver faces the light). Half a texel towards the light met the floor in every Defaults view for each
+// of them, as did a quarter, with less acne and darkening (docs/SHADOWS.md, "Half a texel for relief").
+// `slope-scaled` has its slope factor's margin, the filtered techniques a wider footprint, the moments
+// variance.
+constexpr float kReliefLift = 0.5f;
 
 float nearestReach(const ShadowSettings&) {
     return kNearestReach;
@@ -80,6 +82,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .defines = {"GS_SHADOW_GSM"},
      .readsPointGradient = true,
      .footprintTexels = nearestReach,
+     .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmNaive,
@@ -101,6 +104,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .readsPointGradient = true,
      .usesTapPattern = true,
      .footprintTexels = nearestReach,
+     .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmAverageGradient,
@@ -113,6 +117,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .readsPointGradient = true,
      .usesTapPattern = true,
      .footprintTexels = nearestReach,
+     .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmQuadratic,
@@ -125,6 +130,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .readsPointGradient = true,
      .usesTapPattern = true,
      .footprintTexels = nearestReach,
+     .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::PcfGsmNearer,
@@ -138,6 +144,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .readsPointGradient = true,
      .usesTapPattern = true,
      .footprintTexels = nearestReach,
+     .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
     {.technique = T::ReceiverPlaneBias,
@@ -151,9 +158,8 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .biasesDepth = true},
     {.technique = T::NormalOffset,
      .name = "normal-offset",
-     .summary =
-         "one hardware comparison, the receiver pushed along its normal by (half a texel diagonal + "
-         "`normalOffsetTexels`) texel sizes × sin(normal, light) and a quarter texel towards the light",
+     .summary = "one hardware comparison, the receiver pushed along its normal by (half a texel diagonal + "
+                "`normalOffsetTexels`) texel sizes × sin(normal, light) and half a texel towards the light",
      .reference = "bias reference, \"Alternatives\"",
      .defines = {"GS_SHADOW_SINGLE_COMPARE"},
      .footprintTexels = nearestReach,
@@ -217,7 +223,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
          "light's ray through the texel's centre (never deeper than the fragment), minus `depthBiasSteps` "
          "format steps; the receiver pushed along its normal by half a texel diagonal × sin(normal, light) "
          "and "
-         "a quarter texel towards the light, for receivers that are not planar over the texel",
+         "half a texel towards the light, for receivers that are not planar over the texel",
      .reference = "Dou, Yan, Kerzner, Dai, Wyman, \"Adaptive Depth Bias for Shadow Maps\", JCGT 3(4) 2014",
      .defines = {"GS_SHADOW_ADAPTIVE", "GS_SHADOW_TANGENT_PLANE"},
      .footprintTexels = nearestReach,
@@ -244,6 +250,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .readsPointGradient = true,
      .usesTapPattern = true,
      .footprintTexels = nearestReach,
+     .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
 }};
