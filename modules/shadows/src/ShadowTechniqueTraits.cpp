@@ -222,8 +222,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
          "one hardware comparison at the depth of the receiver's tangent plane (from its normal) on the "
          "light's ray through the texel's centre (never deeper than the fragment), minus `depthBiasSteps` "
          "format steps; the receiver pushed along its normal by half a texel diagonal × sin(normal, light) "
-         "and "
-         "half a texel towards the light, for receivers that are not planar over the texel",
+         "and half a texel towards the light, for receivers that are not planar over the texel",
      .reference = "Dou, Yan, Kerzner, Dai, Wyman, \"Adaptive Depth Bias for Shadow Maps\", JCGT 3(4) 2014",
      .defines = {"GS_SHADOW_ADAPTIVE", "GS_SHADOW_TANGENT_PLANE"},
      .footprintTexels = nearestReach,

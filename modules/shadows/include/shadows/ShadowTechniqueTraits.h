@@ -91,9 +91,9 @@ struct ShadowTechniqueTraits {
     /// over that reach (ShadowSettings::footprintNormalOffset; normalOffsetTexels adds a margin;
     /// depthBiasSteps applies); null for the naive techniques, which have no offset.
     float (*footprintTexels)(const ShadowSettings&) = nullptr;
-    /// Texel sizes the receiver is moved towards the light besides (with the footprint offset, and only where
-    /// ShadowSettings::footprintNormalOffset is on): the margin for relief within a texel of the techniques
-    /// whose comparison is exact for a plane and has no other (docs/SHADOWS.md, "Automatic bias").
+    /// Texel sizes the receiver is also moved towards the light where ShadowSettings::footprintNormalOffset
+    /// is on: the margin for relief within a texel of the techniques that compare along the receiver's plane
+    /// at one fetch (docs/SHADOWS.md, "Half a texel for relief").
     float reliefLiftTexels = 0.0f;
     /// Lowers its comparison depth by depthBiasSteps steps of the depth format.
     bool biasesDepth = false;
