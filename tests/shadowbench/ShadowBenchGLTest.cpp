@@ -54,17 +54,21 @@ void expectDefaultsMeetTheFloor(const ShadowBench& bench, const BenchScene& scen
     }
 }
 
+/// What the floor is measured at: the Defaults table's image size, accuracy only, images beside the test's.
+BenchOptions floorOptions() {
+    BenchOptions options;
+    options.size = {320, 240};
+    options.timing = false;
+    options.imageFolder = std::filesystem::temp_directory_path() / ("gs_bench_" + std::to_string(::getpid()));
+    return options;
+}
+
 class ShadowBenchGLTest : public testing::TestWithParam<const char*> {};
 
 } // namespace
 
 TEST_P(ShadowBenchGLTest, EveryTechniqueAtItsDefaultsMeetsTheFloor) {
-    const engine::HeadlessContext& context = glTestContext();
-    BenchOptions options;
-    options.size = {320, 240};
-    options.timing = false;
-    options.imageFolder = std::filesystem::temp_directory_path() / ("gs_bench_" + std::to_string(::getpid()));
-    const ShadowBench bench(context, options);
+    const ShadowBench bench(glTestContext(), floorOptions());
     const std::filesystem::path path =
         std::filesystem::path(CONTENT_DIR) / "scenes" / (std::string(GetParam()) + ".gltf");
     for (const std::optional<engine::LightAngles> light :
@@ -88,8 +92,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShadowBenchGLTest,
 namespace {
 
 /// `terrain` (6 m texels over a heightfield: relief and creases below a texel) under the lights of the
-/// Defaults sweep where the techniques exact for a plane kept acne and `vsm` leaked (docs/SHADOWS.md, "A
-/// quarter texel for relief", "Light-bleeding reduction 0.4").
+/// Defaults sweep where the techniques comparing along the receiver's plane kept acne and `vsm` leaked
+/// (docs/SHADOWS.md, "Half a texel for relief", "Light-bleeding reduction 0.4").
 class TerrainBenchGLTest : public testing::TestWithParam<engine::LightAngles> {};
 
 } // namespace
@@ -100,12 +104,7 @@ TEST_P(TerrainBenchGLTest, EveryTechniqueAtItsDefaultsMeetsTheFloor) {
         GTEST_SKIP() << "the real-model corpus is absent (" << path.string()
                      << " missing): run bash tools/corpus.sh (needs assimp-utils and assimp-testmodels)";
     }
-    const engine::HeadlessContext& context = glTestContext();
-    BenchOptions options;
-    options.size = {320, 240};
-    options.timing = false;
-    options.imageFolder = std::filesystem::temp_directory_path() / ("gs_bench_" + std::to_string(::getpid()));
-    const ShadowBench bench(context, options);
+    const ShadowBench bench(glTestContext(), floorOptions());
     const auto scene = bench.prepare("terrain", path, GetParam());
     expectDefaultsMeetTheFloor(bench, *scene, "terrain " + GetParam().label(), false);
 }
