@@ -418,8 +418,9 @@ def defaults_section(views, real):
     scores.sort()
     best = scores[0]
     out.append(f"**Recommended default: `{best[1]}`**, the lowest (mean over views of acne + leak + darkening) x "
-               f"(median frame on the real corpus, section Real models): {best[2]:.5f} x {best[3]:.1f} ms. Next: "
-               + ", ".join(f"`{t}` {e:.5f} x {m:.1f} ms" for _, t, e, m in scores[1:4]) + ". "
+               f"(median frame on the real corpus, section Real models): {best[2]:.2e} x {best[3]:.1f} ms = "
+               f"{best[0]:.2e}. Next: "
+               + ", ".join(f"`{t}` {e:.2e} x {m:.1f} ms = {p:.2e}" for p, t, e, m in scores[1:4]) + ". "
                "`ShadowSettings::technique` defaults to it.\n")
 
 
