@@ -68,17 +68,21 @@ done
 
 # Large ones: the Terragen heightfield (assimp 5.2 stops at its "read limit", so gs-corpus reads the format)
 # and a tessellation sweep of generated hills from 10k to 1M triangles.
+# The terrain is staged twice: seen from above its near edge, and by a camera 10 m above the ground looking
+# across it (a low view: shadows far away fall on few pixels, near ones on many).
 terrain=$models/TER/RealisticTerrain_Large.ter
-if [[ -r $terrain ]]; then
-    if ! upToDate "$out/terrain.glb" "$terrain"; then
-        "$corpusTool" terrain "$terrain" "$out/terrain.glb" && built=$((built + 1)) || failed+=(terrain)
+for variant in "terrain|" "terrain-low|--camera-height 10"; do
+    IFS='|' read -r name options <<<"$variant"
+    if [[ ! -r $terrain ]]; then
+        echo "corpus: $name: $terrain is missing; skipped" >&2
+        failed+=("$name")
+    elif ! upToDate "$out/$name.glb" "$terrain"; then
+        # shellcheck disable=SC2086 # options are words
+        "$corpusTool" terrain "$terrain" "$out/$name.glb" $options && built=$((built + 1)) || failed+=("$name")
     else
         skipped=$((skipped + 1))
     fi
-else
-    echo "corpus: terrain: $terrain is missing; skipped" >&2
-    failed+=(terrain)
-fi
+done
 for triangles in 10000 100000 1000000; do
     scene="$out/sweep/hills-$triangles.glb"
     mkdir -p "$out/sweep"
@@ -86,6 +90,18 @@ for triangles in 10000 100000 1000000; do
         skipped=$((skipped + 1))
     else
         "$corpusTool" tessellation "$triangles" "$scene" && built=$((built + 1)) || failed+=("hills-$triangles")
+    fi
+done
+# A generated airport apron seen from 8 m under a low sun, once with one mesh per object and once merged into
+# one mesh whose bounds span the view, as real assets often arrive.
+for entry in "apron|" "apron-merged|--merged"; do
+    IFS='|' read -r name options <<<"$entry"
+    scene="$out/$name.glb"
+    if [[ -s $scene && $scene -nt $corpusTool ]]; then
+        skipped=$((skipped + 1))
+    else
+        # shellcheck disable=SC2086 # options are words
+        "$corpusTool" apron "$scene" $options && built=$((built + 1)) || failed+=("$name")
     fi
 done
 

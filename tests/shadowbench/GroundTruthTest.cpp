@@ -2,6 +2,7 @@
 #include "../support/TestScenes.h"
 
 #include <shadowbench/RayTracedVisibility.h>
+#include <shadowbench/ShadowBench.h>
 #include <shadowbench/ShadowMetrics.h>
 
 #include <engine/Primitives.h>
@@ -9,6 +10,7 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace shadowbench;
@@ -399,6 +401,100 @@ TEST(ShadowMetricsTest, AReceiverWhoseEdgeLiesWithinTheBandOffTheImageIsInTheBan
         classify(size, truth, surfaces, plane, 2.0f),
         (std::vector<PixelClass>{PixelClass::Band, PixelClass::Shadowed, PixelClass::Band, PixelClass::Band,
                                  PixelClass::Lit, PixelClass::Band, PixelClass::Lit}));
+}
+
+TEST(ShadowMetricsTest, ScreenBandIsADiscOfPixelsAroundAnEdge) {
+    // 7x7 lit receivers around one shadowed pixel: within 2 pixels of it (between centres) is the band, the
+    // knight's move (sqrt 5 away) is not.
+    const glm::ivec2 size(7, 7);
+    std::vector<float> truth(49, 1.0f);
+    truth[3 * 7 + 3] = 0.0f;
+    const std::vector<Surface> surfaces(49, Surface::Receiver);
+    const std::vector<PixelClass> classes = classifyByScreenBand(size, truth, surfaces, 2.0f);
+    const auto at = [&](int x, int y) { return classes[static_cast<std::size_t>(y * 7 + x)]; };
+    EXPECT_EQ(at(3, 3), PixelClass::Band);
+    for (const glm::ivec2 p : {glm::ivec2(4, 4), glm::ivec2(2, 3), glm::ivec2(5, 3), glm::ivec2(3, 1)}) {
+        EXPECT_EQ(at(p.x, p.y), PixelClass::Band) << p.x << "," << p.y;
+    }
+    for (const glm::ivec2 p : {glm::ivec2(5, 4), glm::ivec2(5, 5), glm::ivec2(0, 3), glm::ivec2(6, 6)}) {
+        EXPECT_EQ(at(p.x, p.y), PixelClass::Lit) << p.x << "," << p.y;
+    }
+    // A band under 1.5 pixels still holds the 8 neighbours; a wider one reaches further.
+    EXPECT_EQ(classifyByScreenBand(size, truth, surfaces, 0.5f)[4 * 7 + 4], PixelClass::Band);
+    EXPECT_EQ(classifyByScreenBand(size, truth, surfaces, 0.5f)[3 * 7 + 5], PixelClass::Lit);
+    EXPECT_EQ(classifyByScreenBand(size, truth, surfaces, 3.0f)[3 * 7 + 6], PixelClass::Band);
+}
+
+TEST(ShadowMetricsTest, ScreenBandIgnoresTheMapsTexelsAndKeepsTheEdgeOffTheImage) {
+    // The same strip whatever the light: a texel band under a grazing sun spreads over the strip, a pixel
+    // band does not; a receiver whose edge lies off the image (edgeWithinBand) is in the band.
+    const glm::ivec2 size(9, 1);
+    const std::vector<float> truth{1, 1, 1, 1, 0, 0, 0, 0, 0};
+    const std::vector<Surface> surfaces(9, Surface::Receiver);
+    const std::vector<std::uint8_t> edgeWithinBand{0, 0, 0, 0, 0, 0, 0, 0, 1};
+    EXPECT_EQ(classifyByScreenBand(size, truth, surfaces, 2.0f, edgeWithinBand),
+              (std::vector<PixelClass>{PixelClass::Lit, PixelClass::Lit, PixelClass::Band, PixelClass::Band,
+                                       PixelClass::Band, PixelClass::Band, PixelClass::Shadowed,
+                                       PixelClass::Shadowed, PixelClass::Band}));
+    const std::vector<PixelClass> texelBand = stripClasses(9, 4, {1.0f, -0.02f, 0.0f}, 0.1f, 2.0f);
+    EXPECT_EQ(std::count(texelBand.begin(), texelBand.end(), PixelClass::Band), 9);
+}
+
+TEST(ShadowMetricsTest, TexelDensityCountsTrulyLitReceiversWithAFootprint) {
+    const std::vector<PixelClass> classes{PixelClass::Lit,  PixelClass::Lit,      PixelClass::Band,
+                                          PixelClass::Band, PixelClass::Shadowed, PixelClass::Ignored,
+                                          PixelClass::Lit,  PixelClass::Lit};
+    const std::vector<float> truth{1, 1, 1, 0, 0, 1, 1, 1};
+    const std::vector<float> footprints{0.5f, 1.0f, 3.0f, 0.1f, 0.1f, 0.1f, -1.0f, 2.0f};
+    const TexelDensity density = texelDensity(classes, truth, footprints);
+    // Pixels 0, 1, 2 and 7: the band's lit side counts, its shadowed side, shadows, the ignored and the
+    // unknown do not.
+    EXPECT_EQ(density.pixels, 4u);
+    EXPECT_DOUBLE_EQ(density.atMostOnePixel, 0.5);
+    EXPECT_DOUBLE_EQ(density.median, 1.0);
+    EXPECT_DOUBLE_EQ(density.percentile99, 3.0);
+    EXPECT_EQ(texelDensity(classes, truth, std::vector<float>(8, -1.0f)).pixels, 0u);
+}
+
+TEST(TexelFootprintsTest, OverheadMapOfTheGroundIsItsTexelInPixels) {
+    // Pixels one world unit apart on the ground, an orthographic map looking down over 64 units at 16 texels:
+    // a texel spans 4 world units, 4 pixels.
+    const glm::ivec2 size(6, 5);
+    const std::vector<glm::vec3> positions = groundPixels(size);
+    std::vector<Surface> surfaces(positions.size(), Surface::Receiver);
+    surfaces[0] = Surface::None;
+    shadows::LightProjection map;
+    map.worldToShadow = glm::mat4(glm::vec4(1.0f / 64.0f, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                                  glm::vec4(0, 1.0f / 64.0f, 0, 0), glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    map.texelScale = 4.0f;
+    const std::vector<float> footprints = texelFootprints(size, positions, surfaces, {&map, 1}, 16);
+    EXPECT_EQ(footprints[0], -1.0f); // background
+    for (std::size_t i = 1; i < footprints.size(); ++i) {
+        EXPECT_NEAR(footprints[i], 4.0f, 1e-3f) << i;
+    }
+    // Outside every map: unknown.
+    const std::vector<glm::vec3> far(positions.size(), glm::vec3(1000.0f, 0.0f, 0.0f));
+    const std::vector<float> outside = texelFootprints(size, far, surfaces, {&map, 1}, 16);
+    EXPECT_TRUE(std::all_of(outside.begin(), outside.end(), [](float m) { return m == -1.0f; }));
+}
+
+TEST(TexelFootprintsTest, ADerivativeDoesNotCrossASilhouette) {
+    // A strip whose right half lies far away (another surface): the pixel beside the jump takes its near
+    // neighbour's difference.
+    const glm::ivec2 size(6, 2);
+    std::vector<glm::vec3> positions = groundPixels(size);
+    for (glm::vec3& p : positions) {
+        if (p.x >= 3.0f) {
+            p.x += 40.0f;
+        }
+    }
+    const std::vector<Surface> surfaces(positions.size(), Surface::Receiver);
+    shadows::LightProjection map;
+    map.worldToShadow = glm::mat4(glm::vec4(1.0f / 64.0f, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                                  glm::vec4(0, 1.0f / 64.0f, 0, 0), glm::vec4(0.25f, 0.5f, 0.5f, 1.0f));
+    const std::vector<float> footprints = texelFootprints(size, positions, surfaces, {&map, 1}, 16);
+    EXPECT_NEAR(footprints[2], 4.0f, 1e-3f);
+    EXPECT_NEAR(footprints[3], 4.0f, 1e-3f);
 }
 
 TEST(ShadowMetricsTest, APointLightMeasuresAcrossItsRaysAtTheReceiversDistance) {

@@ -563,3 +563,42 @@ TEST(VisibilityMathTest, NoTapIsComparedDeeperThanTheFragment) {
         }
     }
 }
+
+TEST(TexelFootprintMathTest, OneTexelPerPixelIsOne) {
+    EXPECT_FLOAT_EQ(g::gsTexelFootprintPixels(glm::vec2(1.0f, 0.0f), glm::vec2(0.0f, 1.0f)), 1.0f);
+    // Rotation and mirroring do not change a texel's extent.
+    const float c = std::cos(0.7f);
+    const float s = std::sin(0.7f);
+    EXPECT_NEAR(g::gsTexelFootprintPixels(glm::vec2(c, s), glm::vec2(s, -c)), 1.0f, 1e-6f);
+}
+
+TEST(TexelFootprintMathTest, IsTheLargestExtentOfATexelOnScreen) {
+    // Two texels per pixel: a texel is half a pixel wide.
+    EXPECT_FLOAT_EQ(g::gsTexelFootprintPixels(glm::vec2(2.0f, 0.0f), glm::vec2(0.0f, 2.0f)), 0.5f);
+    // Stretched along y on screen (a receiver the light grazes): 0.1 texel per pixel there, so a texel spans
+    // 10 pixels, however fine it is along x.
+    EXPECT_FLOAT_EQ(g::gsTexelFootprintPixels(glm::vec2(4.0f, 0.0f), glm::vec2(0.0f, 0.1f)), 10.0f);
+    // A shear: 1/sigma_min of [[1, 1], [0, 1]] is the golden ratio.
+    EXPECT_NEAR(g::gsTexelFootprintPixels(glm::vec2(1.0f, 0.0f), glm::vec2(1.0f, 1.0f)),
+                0.5f * (1.0f + std::sqrt(5.0f)), 1e-5f);
+}
+
+TEST(TexelFootprintMathTest, IsScaleInvariantAndFiniteAtTheExtremes) {
+    for (const float scale : {1e-29f, 1e-12f, 1e12f, 1e30f}) {
+        const float m = g::gsTexelFootprintPixels(glm::vec2(scale, 0.0f), glm::vec2(0.0f, 2.0f * scale));
+        EXPECT_NEAR(m * scale, 1.0f, 1e-5f) << scale;
+    }
+}
+
+TEST(TexelFootprintMathTest, SingularOrInvalidDerivativesAreUnbounded) {
+    EXPECT_EQ(g::gsTexelFootprintPixels(glm::vec2(0.0f), glm::vec2(0.0f)), g::GS_FOOTPRINT_UNBOUNDED);
+    // Both screen axes move along one line in the map: edge-on.
+    EXPECT_EQ(g::gsTexelFootprintPixels(glm::vec2(1.0f, 2.0f), glm::vec2(2.0f, 4.0f)),
+              g::GS_FOOTPRINT_UNBOUNDED);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(g::gsTexelFootprintPixels(glm::vec2(nan, 0.0f), glm::vec2(0.0f, 1.0f)),
+              g::GS_FOOTPRINT_UNBOUNDED);
+    EXPECT_EQ(g::gsTexelFootprintPixels(glm::vec2(inf, 0.0f), glm::vec2(0.0f, 1.0f)),
+              g::GS_FOOTPRINT_UNBOUNDED);
+}

@@ -126,14 +126,31 @@ content::LoadedScene stageSurface(engine::MeshData surface, const StagingOptions
     }
     const glm::vec3 extent = bounds.max - bounds.min;
     const float width = std::max(extent.x, extent.z);
+    // On the ground a fifth of the way in from the near edge: the highest vertex within 1 % of the width
+    // around that point is the ground under the eye.
+    const glm::vec2 foot(0.0f, 0.3f * width);
+    float ground = bounds.min.y;
+    for (const glm::vec3& p : surface.positions) {
+        if (glm::distance(glm::vec2(p.x, p.z), foot) < 0.01f * width) {
+            ground = std::max(ground, p.y);
+        }
+    }
     scene.entity(scene.create(surface.name)).mesh =
         engine::MeshComponent{std::make_shared<engine::MeshData>(std::move(surface))};
-    // From above the near edge, across the surface towards its far half.
-    const glm::vec3 target(0.0f, bounds.min.y + 0.3f * extent.y, -0.15f * width);
-    const glm::vec3 eye =
-        glm::vec3(0.0f, bounds.max.y, 0.6f * width) +
-        glm::vec3(0.0f, 0.25f * width * std::tan(glm::radians(options.cameraElevation)), 0.0f);
-    addCamera(scene, eye, target, 0.002f * width, 2.5f * width);
+    if (options.cameraHeight) {
+        // A person on the ground looking level across the surface: the near plane a fraction of the height,
+        // so the ground at the feet is not clipped.
+        const glm::vec3 eye(foot.x, ground + *options.cameraHeight, foot.y);
+        addCamera(scene, eye, glm::vec3(0.0f, eye.y - 0.02f * width, -0.3f * width),
+                  std::max(0.05f * *options.cameraHeight, 1e-4f * width), 1.5f * width);
+    } else {
+        // From above the near edge, across the surface towards its far half.
+        const glm::vec3 target(0.0f, bounds.min.y + 0.3f * extent.y, -0.15f * width);
+        const glm::vec3 eye =
+            glm::vec3(0.0f, bounds.max.y, 0.6f * width) +
+            glm::vec3(0.0f, 0.25f * width * std::tan(glm::radians(options.cameraElevation)), 0.0f);
+        addCamera(scene, eye, target, 0.002f * width, 2.5f * width);
+    }
     addSun(scene, glm::vec3(bounds.centre()), width, options);
     return staged;
 }

@@ -19,6 +19,9 @@ struct StagingOptions {
     float sunAzimuth = 110.0f;
     /// Camera elevation above the horizon, degrees, looking at the model's centre from a 3/4 view.
     float cameraElevation = 25.0f;
+    /// stageSurface: when set, the camera stands this many world units above the surface inside its near
+    /// edge and looks across it, as a person on the ground does, instead of from above the near edge.
+    std::optional<float> cameraHeight;
 };
 
 /// @brief Puts `loaded` (a converted model) on a ground plane with a camera and a directional light, all
@@ -29,7 +32,8 @@ content::LoadedScene stageModel(const content::LoadedScene& loaded, const Stagin
                                 const std::string& source);
 
 /// @brief A standalone scene around one mesh (a terrain or a generated surface): the mesh at the origin, a
-/// camera near one edge looking across it from `cameraElevation` degrees, and a low sun.
+/// camera near one edge looking across it from `cameraElevation` degrees (or `cameraHeight` above the
+/// surface), and a low sun.
 content::LoadedScene stageSurface(engine::MeshData surface, const StagingOptions& options);
 
 } // namespace corpus

@@ -1,5 +1,6 @@
 // gs-corpus: turns real models into benchmark scenes (a ground plane, a camera and a sun placed from the
 // model's bounds) and makes the large generated ones. tools/corpus.sh drives it over the real-model corpus.
+#include "ApronScene.h"
 #include "SceneStaging.h"
 #include "TerragenReader.h"
 
@@ -21,12 +22,16 @@ constexpr const char* kUsage = R"(usage:
   gs-corpus stage MODEL.gltf OUT.glb [options]   a converted model on a ground, with camera and sun
   gs-corpus terrain TERRAIN.ter OUT.glb [options] a Terragen heightfield, camera near the ground
   gs-corpus tessellation TRIANGLES OUT.glb [options]  generated hills of about TRIANGLES triangles
+  gs-corpus apron OUT.glb [options]              a generated 300 m airport apron, camera 8 m up
 options:
   --up [-]x|y|z             the model's up axis (stage)                          [y]
   --subdivide SCHEME:LEVEL  refine the model at load (catmull-clark|loop, 0..4) (stage)
-  --sun-elevation DEG       sun above the horizon, 1..90                         [40; terrain 20]
-  --sun-azimuth DEG         sun around +Y, relative to the camera side            [110]
-  --camera-elevation DEG    camera above the horizon, 0..89                       [25])";
+  --sun-elevation DEG       sun above the horizon, 1..90                         [40; terrain 20; apron 8]
+  --sun-azimuth DEG         sun around +Y, relative to the camera side            [110; apron 75]
+  --camera-elevation DEG    camera above the horizon, 0..89 (not apron)           [25]
+  --camera-height UNITS     terrain, tessellation: the camera this high above the ground inside the near
+                            edge, looking level across (instead of from above the edge)
+  --merged                  every object in one mesh on one node (apron))";
 
 [[noreturn]] void usageError(const std::string& message) {
     std::cerr << "gs-corpus: " << message << "\n" << kUsage << "\n";
@@ -68,8 +73,33 @@ corpus::StagingOptions parseOptions(const std::vector<std::string>& args, std::s
             options.sunAzimuth = cli::numberIn(arg, value, -360.0f, 360.0f);
         } else if (arg == "--camera-elevation") {
             options.cameraElevation = cli::numberIn(arg, value, 0.0f, 89.0f);
+        } else if (arg == "--camera-height") {
+            options.cameraHeight = cli::numberIn(arg, value, 0.01f, 1e6f);
         } else {
             usageError("unknown option '" + arg + "'");
+        }
+    }
+    return options;
+}
+
+corpus::ApronOptions parseApronOptions(const std::vector<std::string>& args, std::size_t first) {
+    corpus::ApronOptions options;
+    for (std::size_t i = first; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--merged") {
+            options.merged = true;
+            continue;
+        }
+        if (i + 1 >= args.size()) {
+            usageError("option '" + arg + "' needs a value (or is unknown)");
+        }
+        const std::string& value = args[++i];
+        if (arg == "--sun-elevation") {
+            options.sunElevation = cli::numberIn(arg, value, 1.0f, 90.0f);
+        } else if (arg == "--sun-azimuth") {
+            options.sunAzimuth = cli::numberIn(arg, value, -360.0f, 360.0f);
+        } else {
+            usageError("unknown option '" + arg + "' (apron)");
         }
     }
     return options;
@@ -113,10 +143,12 @@ int main(int argc, char** argv) {
         std::cout << kUsage << "\n";
         return args.empty() ? 2 : 0;
     }
-    if (args.size() < 3) {
-        usageError("'" + args[0] + "' needs an input and an output");
-    }
     const std::string& command = args[0];
+    // The apron is generated from nothing; every other command reads an input.
+    if (command == "apron" ? args.size() < 2 : args.size() < 3) {
+        usageError("'" + command + "' needs " +
+                   (command == "apron" ? "an output" : "an input and an output"));
+    }
     try {
         if (command == "stage") {
             const corpus::StagingOptions options = parseOptions(args, 3, false);
@@ -131,6 +163,9 @@ int main(int argc, char** argv) {
             const int triangles = cli::integerIn("TRIANGLES", args[1], 2, 20'000'000);
             const corpus::StagingOptions options = parseOptions(args, 3, false);
             writeAndReport(corpus::stageSurface(hills(triangles), options), args[2]);
+        } else if (command == "apron") {
+            const corpus::ApronOptions options = parseApronOptions(args, 2);
+            writeAndReport(corpus::apronScene(options), args[1]);
         } else {
             usageError("unknown command '" + command + "'");
         }

@@ -30,6 +30,11 @@ constexpr const char* kUsage = R"(usage: gs-scenetest SCENE [options]
   --max-acne PERCENT        lit receivers rendered in shadow                     [0.05]
   --max-leak PERCENT        shadowed receivers rendered lit                      [0.05]
   --max-darkening PERCENT   mean visibility lost over lit receivers              [0.5]
+  --max-edge-mean PIXELS    mean distance from each true shadow-edge pixel to the nearest rendered one,
+                            and back (each way)                                  [0.5]
+  --max-edge-p95 PIXELS     95th percentile of those distances (each way)        [2]
+                            (edges are checked where the truth has at least 100 edge pixels; acne and leak
+                            are counted outside a band of 2 screen pixels around true edges)
   --golden PNG              compare the shaded frame with this image (same size)
   --max-diff D              per-channel difference a pixel may have, 0..255      [2]
   --max-failing-fraction F  fraction of pixels allowed beyond --max-diff, 0..1   [0.001]
@@ -47,6 +52,8 @@ struct Options {
     double maxAcne = 0.05;
     double maxLeak = 0.05;
     double maxDarkening = 0.5;
+    double maxEdgeMean = 0.5;
+    double maxEdgeP95 = 2.0;
     std::optional<std::filesystem::path> golden;
     int maxDiff = 2;
     double maxFailingFraction = 0.001;
@@ -55,6 +62,10 @@ struct Options {
 };
 
 constexpr cli::Tool kTool{"gs-scenetest", kUsage};
+
+/// Edge distances are checked only over at least this many true edge pixels: with a handful, one missing
+/// rendered edge weighs in at the image diagonal.
+constexpr std::size_t kMinimumEdgePixels = 100;
 
 [[noreturn]] void usageError(const std::string& message) {
     kTool.fail(message);
@@ -82,6 +93,10 @@ Options parse(int argc, char** argv) {
             options.maxLeak = cli::numberIn(arg, value(), 0.0f, 100.0f);
         } else if (arg == "--max-darkening") {
             options.maxDarkening = cli::numberIn(arg, value(), 0.0f, 100.0f);
+        } else if (arg == "--max-edge-mean") {
+            options.maxEdgeMean = cli::numberIn(arg, value(), 0.0f, 10000.0f);
+        } else if (arg == "--max-edge-p95") {
+            options.maxEdgeP95 = cli::numberIn(arg, value(), 0.0f, 10000.0f);
         } else if (arg == "--golden") {
             options.golden = value();
         } else if (arg == "--max-diff") {
@@ -176,6 +191,29 @@ int main(int argc, char** argv) {
         bound("acne", m.acneRate, options.maxAcne);
         bound("leak", m.leakRate, options.maxLeak);
         bound("darkening", m.darkening, options.maxDarkening);
+        const auto edgeBound = [&](const std::string& name, double pixels, double maxPixels) {
+            const bool ok = pixels <= maxPixels;
+            report << "  " << name << " " << pixels << " px (bound " << maxPixels << " px) "
+                   << (ok ? "ok" : "EXCEEDED") << "\n";
+            if (!ok) {
+                violated.push_back(name + " " + std::to_string(pixels) + " px > " +
+                                   std::to_string(maxPixels) + " px");
+            }
+        };
+        if (m.edges.trueToRendered.count >= kMinimumEdgePixels) {
+            edgeBound("edge true->rendered mean", m.edges.trueToRendered.mean, options.maxEdgeMean);
+            edgeBound("edge true->rendered p95", m.edges.trueToRendered.percentile95, options.maxEdgeP95);
+            edgeBound("edge rendered->true mean", m.edges.renderedToTrue.mean, options.maxEdgeMean);
+            edgeBound("edge rendered->true p95", m.edges.renderedToTrue.percentile95, options.maxEdgeP95);
+        } else {
+            report << "  edges not checked: " << m.edges.trueToRendered.count
+                   << " true edge pixels (fewer than " << kMinimumEdgePixels << ")\n";
+        }
+        if (m.density.pixels > 0) {
+            report << "  texel density: " << percent(m.density.atMostOnePixel)
+                   << " of lit receivers at m <= 1 (one texel per pixel or finer), median "
+                   << m.density.median << " px, p99 " << m.density.percentile99 << " px\n";
+        }
         if (options.golden) {
             const engine::Image golden = engine::readPng(*options.golden);
             if (golden.size != shaded.size) {

@@ -28,6 +28,16 @@ sweep, scenes, repro, filtered = load("knob-sweep"), load("scenes"), load("repro
 meta = sweep
 
 
+def band_description(meta):
+    """What the band of a run's metadata is, in words (runs before the pixel band name texels)."""
+    band = meta.get("band", {"width": meta.get("bandTexels", 2), "unit": "texels"})
+    if band["unit"] == "pixels":
+        return (f"a receiver within {band['width']:g} screen pixels of a receiver of the other truth, or whose other "
+                "side lies within that reach off the image, hidden from the camera")
+    return (f"within {band['width']:g} shadow texels of a receiver of the other truth, measured across the light's "
+            "rays as the map sees them, or next to one")
+
+
 def total_ms(r):
     return r["shadowPassMs"]["median"] + r["lightingPassMs"]["median"]
 
@@ -63,16 +73,19 @@ def plot(rows, scene, path):
 
 
 def edges(r):
-    """Edge placement, pixels: true->rendered and rendered->true, mean / 95th percentile."""
+    """Edge placement, pixels: true->rendered and rendered->true, mean / 95th percentile; then texel density: the
+    fraction of lit receivers at m <= 1 / the 99th percentile of m (– for the peer, whose maps we do not know)."""
     e = r["edges"]
+    d = r.get("density")
+    density = f"{100 * d['atMostOnePixel']:.0f} % / {d['p99']:.1f}" if d else "–"
     return (f"{e['trueToRendered']['mean']:.2f} / {e['trueToRendered']['p95']:.1f} | "
-            f"{e['renderedToTrue']['mean']:.2f} / {e['renderedToTrue']['p95']:.1f}")
+            f"{e['renderedToTrue']['mean']:.2f} / {e['renderedToTrue']['p95']:.1f} | {density}")
 
 
 def table(rows):
-    lines = ["| configuration | acne | leak | darkening | MAE | edges true→rendered px | edges rendered→true px "
+    lines = ["| configuration | acne | leak | darkening | MAE | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 "
              "| shadow ms | lighting ms | memory |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     front = {id(r) for r in pareto(rows)}
     for r in sorted(rows, key=total_ms):
         star = " ★" if id(r) in front else ""
@@ -102,10 +115,8 @@ out.append(f"- Images {meta['width']}x{meta['height']}; receivers = pixels facin
            "normal and their facet (where the two disagree, at a smoothed mesh's terminator, the facets shadow "
            "themselves); acne = truly lit receivers with visibility < 0.5, "
            "leak = truly shadowed receivers with visibility > 0.5, both outside a band around true shadow edges: "
-           f"within {meta['bandTexels']} shadow texels of a receiver of the other truth, measured across the "
-           "light's rays as the map sees them (a receiver the light grazes spreads a texel over many pixels), or "
-           "next to one (surfaces facing away from the light count as dark: a lit face meeting one is at an edge of the "
-           "light); darkening = mean (1 - V) over truly lit "
+           f"{band_description(meta)} (surfaces facing away from the light count as dark: a lit face meeting one is "
+           "at an edge of the light); darkening = mean (1 - V) over truly lit "
            "receivers; MAE over every receiver; edges: distances in pixels from each true shadow-edge pixel to the "
            "nearest rendered one and back, mean / 95th percentile. ★ marks the Pareto front (no configuration is both faster and "
            "more accurate).\n")
@@ -151,9 +162,9 @@ out.append(f"Circular-8 closed form and SIMD form agree with the general regress
 
 # Filtered families.
 out.append("## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out\n")
-out.append("| scene | configuration | acne | leak | MAE | edges true→rendered px | edges rendered→true px | lighting ms "
+out.append("| scene | configuration | acne | leak | MAE | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 | lighting ms "
            "| memory | full-kernel pixels |")
-out.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+out.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
 for r in filtered["results"]:
     full = f"{100 * r['fullKernelFraction']:.1f} %" if r["fullKernelFraction"] >= 0 else "—"
     out.append(f"| {r['scene']} | {r['label']} | {100 * r['acneRate']:.2f} % | {100 * r['leakRate']:.2f} % | "
@@ -264,9 +275,9 @@ def real_models(real, scaling):
                  f"{cost['triangles']} triangles, {cost['drawCalls']} draw calls ({cost['culledChunks']} chunks culled), "
                  f"{cost['meshBytes'] / 2**20:.1f} MiB of mesh buffers; unshadowed frame {ours_unshadowed:.1f} ms"
                  + (f" (osg {peer_unshadowed:.1f} ms)" if peer_unshadowed else "") + ".\n",
-                 "| technique | acne | leak | darkening | MAE | edges true→rendered px | edges rendered→true px | frame ms "
+                 "| technique | acne | leak | darkening | MAE | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 | frame ms "
                  "| / osg-vdsm | shadow memory |",
-                 "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+                 "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
         for r in sorted(rows, key=frame_ms):
             ratio = f"{frame_ms(r) / frame_ms(vdsm):.2f}x" if vdsm else "–"
             memory = f"{r['shadowBytes'] / 2**20:.0f} MiB" if not r["peer"] else "–"
@@ -336,6 +347,8 @@ MIN_PIXELS = 1000
 # Edge distances count only where the truth has at least this many edge pixels: a view with a handful of true edge
 # pixels and no rendered edge would otherwise weigh in at the image diagonal.
 MIN_EDGE_PIXELS = 100
+# The floor's edge placement, both ways (true→rendered, rendered→true), in screen pixels.
+EDGE_FLOOR = {"mean": 0.5, "p95": 2.0}
 
 
 def scored(r):
@@ -344,8 +357,27 @@ def scored(r):
     return {k: r[k] for k in FLOOR if counts[k] >= MIN_PIXELS}
 
 
+def edges_scored(r):
+    return r["edges"]["trueToRendered"]["pixels"] >= MIN_EDGE_PIXELS
+
+
+def edges_meet_floor(r):
+    return not edges_scored(r) or all(r["edges"][d][k] <= EDGE_FLOOR[k]
+                                      for d in ("trueToRendered", "renderedToTrue") for k in EDGE_FLOOR)
+
+
 def meets_floor(r):
-    return all(v < FLOOR[k] for k, v in scored(r).items())
+    return all(v < FLOOR[k] for k, v in scored(r).items()) and edges_meet_floor(r)
+
+
+def density_cells(mine):
+    """Texel density over rows: mean fraction of lit receivers at m <= 1, the worst row's, and the worst p99."""
+    known = [r["density"] for r in mine if r.get("density")]
+    if not known:
+        return "– | – | –"
+    fractions = [d["atMostOnePixel"] for d in known]
+    return (f"{100 * sum(fractions) / len(fractions):.1f} % | {100 * min(fractions):.1f} % | "
+            f"{max(d['p99'] for d in known):.1f}")
 
 
 def defaults_section(views, real):
@@ -358,13 +390,17 @@ def defaults_section(views, real):
             corpus_ms.setdefault(r["settings"]["technique"], []).append(frame_ms(r))
     with open(plot_folder / "defaults.csv", "w") as csv:
         csv.write("scene,technique,acne_rate,leak_rate,darkening,mae,lit,shadowed,edge_true_to_rendered_mean,"
-                  "edge_true_to_rendered_p95,edge_rendered_to_true_mean,edge_rendered_to_true_p95,meets_floor\n")
+                  "edge_true_to_rendered_p95,edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,"
+                  "density_m_at_most_1,density_m_p50,density_m_p99,meets_floor\n")
         for r in rows:
             e = r["edges"]
+            d = r.get("density") or {"atMostOnePixel": -1, "median": -1, "p99": -1}
             csv.write(f"{r['scene']},{r['settings']['technique']},{r['acneRate']:.6f},{r['leakRate']:.6f},"
                       f"{r['darkening']:.6f},{r['mae']:.6f},{r['pixels']['lit']},{r['pixels']['shadowed']},"
                       f"{e['trueToRendered']['mean']:.3f},{e['trueToRendered']['p95']:.3f},"
-                      f"{e['renderedToTrue']['mean']:.3f},{e['renderedToTrue']['p95']:.3f},{meets_floor(r)}\n")
+                      f"{e['renderedToTrue']['mean']:.3f},{e['renderedToTrue']['p95']:.3f},"
+                      f"{e['trueToRendered']['pixels']},{d['atMostOnePixel']:.4f},{d['median']:.3f},{d['p99']:.3f},"
+                      f"{meets_floor(r)}\n")
     out.append("## Defaults\n")
     s = rows[0]["settings"]
     out.append(f"Every technique at its defaults ({s['resolution']}² {s['depthFormat'].upper()} maps, PCF "
@@ -374,14 +410,20 @@ def defaults_section(views, real):
                f"azimuths x elevations down to 1° above the horizon ({len(set(r['scene'] for r in rows))} views, "
                f"{views['width']}x{views['height']}, accuracy only), against the ray-traced truth. Floor: acne < "
                f"{100 * FLOOR['acneRate']:.2f} %, leak < {100 * FLOOR['leakRate']:.2f} %, darkening < "
-               f"{100 * FLOOR['darkening']:.1f} %; a rate counts only over at least {MIN_PIXELS} pixels (grazing "
-               "views see few receivers). Edge placement: from each true shadow-edge pixel to the nearest rendered "
-               "edge (missing or displaced edges: peter-panning, shrunken or swollen shadows) and back (edges that "
-               "should not be there: speckle lines), in pixels, mean over views of the per-view mean, and the worst "
-               f"per-view 95th percentile, over views with at least {MIN_EDGE_PIXELS} true edge pixels. Every row is in `docs/results/defaults.csv`.\n")
+               f"{100 * FLOOR['darkening']:.1f} %, outside the band ({band_description(views)}); a rate counts only "
+               f"over at least {MIN_PIXELS} pixels (grazing views see few receivers); and edge placement, both ways "
+               f"mean ≤ {EDGE_FLOOR['mean']} px and 95th percentile ≤ {EDGE_FLOOR['p95']:g} px on views with at least "
+               f"{MIN_EDGE_PIXELS} true edge pixels. Edge placement: from each true shadow-edge pixel to the nearest "
+               "rendered edge (missing or displaced edges: peter-panning, shrunken or swollen shadows, staircases) and "
+               "back (edges that should not be there: speckle lines), in pixels; the table gives the mean over views "
+               "of the per-view mean and the worst per-view 95th percentile. Texel density: Lloyd et al.'s m, the "
+               "largest extent of one shadow texel in screen pixels, at every truly lit receiver; the table gives "
+               "the mean and the worst view's fraction at m ≤ 1 and the worst view's 99th percentile. Every row is in "
+               "`docs/results/defaults.csv`.\n")
     table = ["| technique | views meeting the floor | worst acne | worst leak | worst darkening | true→rendered edge: "
-             "mean / worst p95 | rendered→true edge: mean / worst p95 | corpus frame ms (median) |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+             "mean / worst p95 | rendered→true edge: mean / worst p95 | m ≤ 1: mean | m ≤ 1: worst | worst m p99 | "
+             "corpus frame ms (median) |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     scores = []
     for technique in techniques:
         mine = [r for r in rows if r["settings"]["technique"] == technique]
@@ -404,7 +446,8 @@ def defaults_section(views, real):
         table.append(f"| `{technique}`{' (naive)' if naive else ''} | {met} / {len(mine)} | {100 * worst('acneRate'):.3f} % | "
                      f"{100 * worst('leakRate'):.3f} % | {100 * worst('darkening'):.3f} % | "
                      f"{edge('trueToRendered', 'mean'):.2f} / {edge('trueToRendered', 'p95'):.1f} | "
-                     f"{edge('renderedToTrue', 'mean'):.2f} / {edge('renderedToTrue', 'p95'):.1f} | {ms:.1f} |")
+                     f"{edge('renderedToTrue', 'mean'):.2f} / {edge('renderedToTrue', 'p95'):.1f} | "
+                     f"{density_cells(mine)} | {ms:.1f} |")
     out.append("\n".join(table) + "\n")
     matrix = ["| technique | " + " | ".join(scenes) + " |", "| --- |" + " --- |" * len(scenes)]
     for technique in techniques:
@@ -476,8 +519,8 @@ def every_light_section(cascades, every):
                "two cascades, the most it draws) ran on the same scene, camera and light in the same run, at their "
                "own defaults.\n")
     lines = ["| configuration | maps | split weight | acne | leak | darkening | edges true→rendered px | "
-             "edges rendered→true px | shimmer | shadow ms | frame ms | memory |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+             "edges rendered→true px | m ≤ 1 / m p99 | shimmer | shadow ms | frame ms | memory |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     rows = [r for r in cascades["results"] if r["scene"] == "outdoor"]
     for r in sorted(rows, key=lambda r: (bool(r["peer"]), r["label"])):
         st = r["settings"]

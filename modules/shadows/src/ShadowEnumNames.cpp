@@ -65,7 +65,7 @@ std::span<const EnumName<ReceiverPlaneKernel>> enumNames() {
 
 template <>
 std::span<const EnumName<ShadowDebugView>> enumNames() {
-    static constexpr std::array<EnumName<ShadowDebugView>, 8> names{
+    static constexpr std::array<EnumName<ShadowDebugView>, 9> names{
         {{ShadowDebugView::None, "none"},
          {ShadowDebugView::TexelCheckerboard, "texels"},
          {ShadowDebugView::GradientMagnitude, "gradient"},
@@ -73,7 +73,8 @@ std::span<const EnumName<ShadowDebugView>> enumNames() {
          {ShadowDebugView::Visibility, "visibility"},
          {ShadowDebugView::ShadowMap, "shadow-map"},
          {ShadowDebugView::FullKernel, "kernel"},
-         {ShadowDebugView::Maps, "maps"}}};
+         {ShadowDebugView::Maps, "maps"},
+         {ShadowDebugView::Density, "density"}}};
     return names;
 }
 

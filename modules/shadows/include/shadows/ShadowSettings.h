@@ -51,7 +51,10 @@ enum class ShadowDebugView {
     ShadowMap,
     FullKernel,
     /// The map each pixel reads: cascade index (directional) or cube face (point) as colour.
-    Maps
+    Maps,
+    /// Lloyd's m, the largest extent of one shadow texel in screen pixels: green m <= 1, yellow <= 2, red
+    /// > 2.
+    Density
 };
 
 /// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it

@@ -52,6 +52,7 @@ float gsDebugGradient = 0.0;
 float gsDebugBias = 0.0;
 float gsDebugStored = 1.0;
 vec2 gsDebugTexel = vec2(0.0);
+float gsDebugDensity = -1.0; // Lloyd's m (gsTexelFootprintPixels); -1 where no map was read
 bool gsDebugSet = false;
 bool gsDebugFullKernel = false;
 
@@ -216,6 +217,11 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     gsDebugFullKernel = result.fullKernel;
     if (!gsDebugSet) {
         gsDebugSet = true;
+#ifdef GS_SHADOW_DEBUG_DENSITY
+        vec3 texelDx = gsShadowDerivative(m, clip, fragment.dPdx) * gsShadowTexel[slot].x;
+        vec3 texelDy = gsShadowDerivative(m, clip, fragment.dPdy) * gsShadowTexel[slot].x;
+        gsDebugDensity = gsTexelFootprintPixels(texelDx.xy, texelDy.xy);
+#endif
         gsDebugVisibility = result.visibility;
         gsDebugGradient = length(result.gradient);
         gsDebugBias = result.bias;
@@ -280,6 +286,14 @@ void gsShadowDebug(inout vec3 color) {
 #elif defined(GS_SHADOW_DEBUG_KERNEL)
     // Red where the full kernel ran (early-out undecided: a penumbra candidate); visibility in green.
     color = vec3(gsDebugFullKernel ? 1.0 : 0.0, gsDebugVisibility, 0.0);
+#elif defined(GS_SHADOW_DEBUG_DENSITY)
+    // Lloyd's m, one texel's largest extent in pixels: green m <= 1 (a texel per pixel or finer), yellow <= 2,
+    // red beyond, darkened in shadow; grey where no map was read.
+    vec3 density = gsDebugDensity < 0.0    ? vec3(0.5)
+                   : gsDebugDensity <= 1.0 ? vec3(0.2, 0.9, 0.2)
+                   : gsDebugDensity <= 2.0 ? vec3(1.0, 0.9, 0.15)
+                                           : vec3(1.0, 0.2, 0.15);
+    color = density * (0.35 + 0.65 * gsDebugVisibility);
 #elif defined(GS_SHADOW_DEBUG_MAPS)
     // Cascade 0..3 or cube face 0..5 as a hue, darkened in shadow; grey where no map was read.
     const vec3 palette[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),

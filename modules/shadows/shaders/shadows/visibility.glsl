@@ -417,3 +417,31 @@ float gsCascadeBlendWeight(float depth, float start, float end, float blend) {
     }
     return gsSaturate((depth - (end - band)) / band);
 }
+
+// Lloyd, Tuft, Yoon, Manocha, "Warping and Partitioning for Low Error Shadow Maps" (EGSR 2006), section 3:
+// the aliasing error m is the largest extent, in screen pixels, of one shadow texel seen in the image. With
+// the texel coordinates' screen derivatives as the columns of J = d(texel)/d(pixel), a unit texel covers
+// J^-1's image of a unit square, whose largest extent is 1/sigma_min(J) = sigma_max(J) / |det J|. m <= 1 is
+// one texel per pixel or finer. A singular J (a receiver edge-on to the light or to the camera) gives
+// GS_FOOTPRINT_UNBOUNDED.
+const float GS_FOOTPRINT_UNBOUNDED = 1e30f;
+float gsTexelFootprintPixels(vec2 texelPerPixelX, vec2 texelPerPixelY) {
+    // Scaled first, so that the squares neither overflow for huge derivatives nor underflow for tiny ones.
+    float scale = max(max(abs(texelPerPixelX.x), abs(texelPerPixelX.y)),
+                      max(abs(texelPerPixelY.x), abs(texelPerPixelY.y)));
+    if (!(scale > 0.0f && scale <= 3.0e38f)) { // zero, infinite or NaN
+        return GS_FOOTPRINT_UNBOUNDED;
+    }
+    vec2 x = texelPerPixelX / scale;
+    vec2 y = texelPerPixelY / scale;
+    float a = dot(x, x);
+    float b = dot(x, y);
+    float c = dot(y, y);
+    float halfDifference = 0.5f * (a - c);
+    float largest = sqrt(max(0.5f * (a + c) + sqrt(halfDifference * halfDifference + b * b), 0.0f));
+    float determinant = abs(x.x * y.y - x.y * y.x);
+    if (!(determinant > 1e-12f * largest * largest)) {
+        return GS_FOOTPRINT_UNBOUNDED;
+    }
+    return min(largest / (determinant * scale), GS_FOOTPRINT_UNBOUNDED);
+}

@@ -7,6 +7,7 @@
 #include <engine/RenderTarget.h>
 #include <shadows/ShadowModule.h>
 #include <shadows/ShadowSettingsJson.h>
+#include <shadows/VisibilityMath.h>
 
 #include <nlohmann/json.hpp>
 
@@ -53,29 +54,57 @@ PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine
     return summarise(times);
 }
 
-/// The world size of a shadow texel at each receiver pixel, 0 elsewhere: the finest of `maps` that holds it
-/// (orthographic: the map's texel; perspective: its texel scale times the distance along its axis).
+/// The finest of `maps` holding `position` (orthographic: the map's texel; perspective: its texel scale times
+/// the distance along its axis), with that texel's world size; nullopt where none holds it.
+std::optional<std::pair<std::size_t, float>> finestMap(std::span<const shadows::LightProjection> maps,
+                                                       const glm::vec3& position) {
+    std::optional<std::pair<std::size_t, float>> finest;
+    for (std::size_t k = 0; k < maps.size(); ++k) {
+        const shadows::LightProjection& map = maps[k];
+        const glm::vec4 s = map.worldToShadow * glm::vec4(position, 1.0f);
+        if (!(s.w > 0.0f)) {
+            continue;
+        }
+        const glm::vec3 coord = glm::vec3(s) / s.w;
+        if (coord.x >= 0.0f && coord.x <= 1.0f && coord.y >= 0.0f && coord.y <= 1.0f && coord.z <= 1.0f) {
+            const float texel = map.texelScale * (map.perspective ? s.w : 1.0f);
+            if (!finest || texel < finest->second) {
+                finest = std::pair{k, texel};
+            }
+        }
+    }
+    return finest;
+}
+
+/// The world size of a shadow texel at each receiver pixel, 0 elsewhere (finestMap).
 std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
                                       const std::vector<Surface>& surfaces,
                                       const std::vector<shadows::LightProjection>& maps) {
     std::vector<float> sizes(positions.size(), 0.0f);
     for (std::size_t i = 0; i < positions.size(); ++i) {
-        if (surfaces[i] != Surface::Receiver) {
-            continue;
-        }
-        float finest = std::numeric_limits<float>::max();
-        for (const shadows::LightProjection& map : maps) {
-            const glm::vec4 s = map.worldToShadow * glm::vec4(positions[i], 1.0f);
-            if (!(s.w > 0.0f)) {
-                continue;
-            }
-            const glm::vec3 coord = glm::vec3(s) / s.w;
-            if (coord.x >= 0.0f && coord.x <= 1.0f && coord.y >= 0.0f && coord.y <= 1.0f && coord.z <= 1.0f) {
-                finest = std::min(finest, map.texelScale * (map.perspective ? s.w : 1.0f));
+        if (surfaces[i] == Surface::Receiver) {
+            if (const auto finest = finestMap(maps, positions[i])) {
+                sizes[i] = finest->second;
             }
         }
-        if (finest < std::numeric_limits<float>::max()) {
-            sizes[i] = finest;
+    }
+    return sizes;
+}
+
+/// The world size of one pixel at each covered pixel across its view ray (0 elsewhere): the eye distance
+/// times a pixel's angle for a perspective camera, the view height over the image's for an orthographic one.
+std::vector<float> viewPixelSizes(const engine::Scene& scene, engine::EntityId camera,
+                                  const std::vector<glm::vec3>& positions,
+                                  const std::vector<std::uint8_t>& covered, glm::ivec2 size) {
+    const engine::CameraComponent& lens = *scene.entity(camera).camera;
+    const glm::vec3 eye(scene.worldMatrix(camera)[3]);
+    const float rows = static_cast<float>(std::max(size.y, 1));
+    std::vector<float> sizes(positions.size(), 0.0f);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        if (covered[i]) {
+            sizes[i] = lens.projection == engine::ProjectionType::Perspective
+                           ? glm::length(positions[i] - eye) * 2.0f * std::tan(0.5f * lens.verticalFov) / rows
+                           : lens.orthographicHeight / rows;
         }
     }
     return sizes;
@@ -108,6 +137,7 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
         covered[i] = positions[i].w > 0.5f;
     }
     concave_ = concaveMask(options.size, positions_, normals_, covered, 0.5f);
+    pixelSizes_ = viewPixelSizes(scene_, camera_, positions_, covered, options.size);
 
     tracer_ = std::make_unique<RayTracedVisibility>(scene_);
     RayTracedVisibility& tracer = *tracer_;
@@ -242,11 +272,15 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
     for (std::size_t i = 0; i < pixels.size(); ++i) {
         visibility[i] = pixels[i].x;
     }
-    // The band is measured in the texels of the finest map holding each receiver (a light's cascades and cube
-    // faces differ).
-    return measureVisibility(
-        scene, std::move(visibility),
-        receiverTexelSizes(scene.positions_, scene.surfaces_, module.lightProjections(scene.light_.index)));
+    // A texel band is measured in the texels of the finest map holding each receiver (a light's cascades and
+    // cube faces differ).
+    const std::vector<shadows::LightProjection> maps = module.lightProjections(scene.light_.index);
+    Accuracy accuracy = measureVisibility(scene, std::move(visibility),
+                                          receiverTexelSizes(scene.positions_, scene.surfaces_, maps));
+    accuracy.footprints =
+        texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps, settings.resolution);
+    accuracy.metrics.density = texelDensity(accuracy.classes, accuracy.truth, accuracy.footprints);
+    return accuracy;
 }
 
 Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<float> visibility,
@@ -266,19 +300,24 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     plane.directional = scene.light_.light.type == engine::LightType::Directional;
     plane.direction = scene.light_.direction;
     plane.position = scene.light_.position;
-    if (scene.classes_.empty() || scene.classifiedTexelSizes_ != accuracy.texelSizes) {
+    // A pixel band does not depend on the maps: one classification per scene.
+    const bool texelBand = options_.bandUnit == BandUnit::Texels;
+    if (scene.classes_.empty() || (texelBand && scene.classifiedTexelSizes_ != accuracy.texelSizes)) {
         std::vector<float> reach(scene.truth_.size(), 0.0f);
         std::vector<std::uint8_t> lit(scene.truth_.size(), 0);
         for (std::size_t i = 0; i < reach.size(); ++i) {
             if (scene.surfaces_[i] == Surface::Receiver) {
-                reach[i] = options_.bandTexels * accuracy.texelSizes[i];
+                reach[i] = options_.bandWidth * (texelBand ? accuracy.texelSizes[i] : scene.pixelSizes_[i]);
                 lit[i] = static_cast<std::uint8_t>(scene.truth_[i] >= 0.5f);
             }
         }
         std::vector<std::uint8_t> edgeWithinBand(reach.size());
         scene.tracer_->edgeWithin(scene.positions_, scene.normals_, reach, lit, scene.light_, edgeWithinBand);
         plane.edgeWithinBand = edgeWithinBand;
-        scene.classes_ = classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandTexels);
+        scene.classes_ =
+            texelBand ? classify(options_.size, scene.truth_, scene.surfaces_, plane, options_.bandWidth)
+                      : classifyByScreenBand(options_.size, scene.truth_, scene.surfaces_, options_.bandWidth,
+                                             edgeWithinBand);
         scene.classifiedTexelSizes_ = accuracy.texelSizes;
     }
     accuracy.classes = scene.classes_;
@@ -333,6 +372,64 @@ BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
     return result;
 }
 
+std::string_view toString(BandUnit unit) {
+    return unit == BandUnit::Pixels ? "pixels" : "texels";
+}
+
+std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
+                                   std::span<const Surface> surfaces,
+                                   std::span<const shadows::LightProjection> maps, int resolution) {
+    std::vector<float> footprints(positions.size(), -1.0f);
+    const auto index = [&](int x, int y) {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
+    };
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = index(x, y);
+            if (surfaces[i] != Surface::Receiver) {
+                continue;
+            }
+            const auto finest = finestMap(maps, positions[i]);
+            if (!finest) {
+                continue;
+            }
+            const glm::mat4& toShadow = maps[finest->first].worldToShadow;
+            const auto texelAt = [&](std::size_t j) -> std::optional<glm::vec2> {
+                const glm::vec4 s = toShadow * glm::vec4(positions[j], 1.0f);
+                if (surfaces[j] == Surface::None || !(s.w > 0.0f)) {
+                    return std::nullopt;
+                }
+                return glm::vec2(s) / s.w * static_cast<float>(resolution);
+            };
+            const glm::vec2 centre = *texelAt(i);
+            // The one-sided difference towards the nearer neighbour in texels: the other may lie across a
+            // silhouette, on another surface.
+            const auto derivative = [&](glm::ivec2 step) -> std::optional<glm::vec2> {
+                std::optional<glm::vec2> best;
+                for (const int sign : {1, -1}) {
+                    const glm::ivec2 n = glm::ivec2(x, y) + sign * step;
+                    if (n.x < 0 || n.y < 0 || n.x >= size.x || n.y >= size.y) {
+                        continue;
+                    }
+                    if (const auto t = texelAt(index(n.x, n.y))) {
+                        const glm::vec2 d = static_cast<float>(sign) * (*t - centre);
+                        if (!best || glm::length(d) < glm::length(*best)) {
+                            best = d;
+                        }
+                    }
+                }
+                return best;
+            };
+            const auto dx = derivative({1, 0});
+            const auto dy = derivative({0, 1});
+            if (dx && dy) {
+                footprints[i] = shadows::glsl::gsTexelFootprintPixels(*dx, *dy);
+            }
+        }
+    }
+    return footprints;
+}
+
 shadows::ShadowSettings settingsFromAssignments(const std::string& assignments, const std::string& source) {
     nlohmann::json document = nlohmann::json::object();
     std::istringstream list(assignments);
@@ -370,7 +467,7 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
            "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
            "full_kernel_fraction,frame_ms_median,peer,edge_true_to_rendered_mean,edge_true_to_rendered_p95,"
            "edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,rendered_edge_pixels,"
-           "shimmer\n";
+           "shimmer,density_pixels,density_m_at_most_1,density_m_p50,density_m_p99\n";
     for (const BenchResult& r : results) {
         const shadows::ShadowSettings& s = r.config.settings;
         const ShadowMetrics& m = r.metrics;
@@ -385,7 +482,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << r.frame.median << ',' << r.peerClass << ',' << m.edges.trueToRendered.mean << ','
             << m.edges.trueToRendered.percentile95 << ',' << m.edges.renderedToTrue.mean << ','
             << m.edges.renderedToTrue.percentile95 << ',' << m.edges.trueToRendered.count << ','
-            << m.edges.renderedToTrue.count << ',' << r.shimmer << '\n';
+            << m.edges.renderedToTrue.count << ',' << r.shimmer << ',' << m.density.pixels << ','
+            << m.density.atMostOnePixel << ',' << m.density.median << ',' << m.density.percentile99 << '\n';
     }
     return csv.str();
 }
@@ -400,7 +498,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["width"] = options.size.x;
     document["height"] = options.size.y;
     document["frames"] = options.frames;
-    document["bandTexels"] = options.bandTexels;
+    document["band"] = {{"width", options.bandWidth}, {"unit", std::string(toString(options.bandUnit))}};
     document["shimmerFrames"] = options.shimmerFrames;
     document["groundTruth"] = options.softSamplesPerAxis > 0 ? "soft" : "hard";
     nlohmann::json list = nlohmann::json::array();
@@ -433,6 +531,11 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                 {{"pixels", m.edges.renderedToTrue.count},
                  {"mean", m.edges.renderedToTrue.mean},
                  {"p95", m.edges.renderedToTrue.percentile95}}}}},
+             {"density", m.density.pixels == 0 ? nlohmann::json()
+                                               : nlohmann::json({{"pixels", m.density.pixels},
+                                                                 {"atMostOnePixel", m.density.atMostOnePixel},
+                                                                 {"median", m.density.median},
+                                                                 {"p99", m.density.percentile99}})},
              {"shadowPassMs",
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
              {"lightingPassMs",

@@ -10,12 +10,15 @@
 #include <engine/LightAim.h>
 #include <engine/PassTimer.h>
 #include <engine/RenderTarget.h>
+#include <shadows/LightFrustum.h>
 #include <shadows/ShadowSettings.h>
 
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace shadowbench {
@@ -83,10 +86,19 @@ struct Accuracy {
     std::vector<PixelClass> classes;
     std::vector<float> visibility;
     std::vector<float> truth;
-    /// World size of a shadow texel at each receiver pixel (0: no map holds it), which the band is measured
-    /// in.
+    /// World size of a shadow texel at each receiver pixel (0: no map holds it), which a texel band is
+    /// measured in.
     std::vector<float> texelSizes;
+    /// Lloyd's m at each receiver pixel (texelFootprints); negative where unknown (a peer's image, a pixel
+    /// no map holds).
+    std::vector<float> footprints;
 };
+
+/// @brief The unit of the boundary band (BenchOptions::bandWidth).
+enum class BandUnit { Pixels, Texels };
+
+/// @brief "pixels" or "texels".
+[[nodiscard]] std::string_view toString(BandUnit unit);
 
 /// @brief Options of a benchmark run.
 struct BenchOptions {
@@ -97,8 +109,11 @@ struct BenchOptions {
     /// Whether run() times frames and passes; without, only accuracy is measured (times are -1). Default
     /// true.
     bool timing = true;
-    /// Half-width of the boundary band around true shadow edges, in shadow-map texels. Default 2.
-    float bandTexels = 2.0f;
+    /// Half-width of the boundary band around true shadow edges (not scored for acne and leak), in
+    /// `bandUnit`. Default 2 screen pixels: what a viewer sees. Texels (the map's unit; under a low sun one
+    /// texel spans tens of pixels, so a texel band hides staircase edges) stay for comparison.
+    float bandWidth = 2.0f;
+    BandUnit bandUnit = BandUnit::Pixels;
     /// Soft ground truth: stratified samples per axis (0 = hard ground truth). Default 0.
     int softSamplesPerAxis = 0;
     /// Soft ground truth: light radius (sun: angular radius in radians; spot: world units). Default 0.01.
@@ -130,6 +145,9 @@ private:
     std::vector<Surface> surfaces_;
     std::vector<std::uint8_t> concave_;
     std::vector<float> truth_;
+    /// World size of one pixel at each covered pixel, across the view ray: a pixel band's reach off the
+    /// image.
+    std::vector<float> pixelSizes_;
     // Kept for the band: where the light reaches near a shadowed receiver depends on the maps' texel sizes.
     std::unique_ptr<RayTracedVisibility> tracer_;
     // The classes depend on the truth and the maps' texel sizes only: configurations with the same map layout
@@ -191,6 +209,14 @@ private:
     BenchOptions options_;
     engine::TimingMethod method_;
 };
+
+/// @brief Lloyd et al.'s m at each receiver pixel (`surfaces`): the largest extent in pixels of one texel of
+/// the finest of `maps` (each `resolution`² texels) holding it, from the texel coordinates' differences to
+/// its neighbours on the same surface (the nearer one in texels along each axis, as a derivative that does
+/// not cross a silhouette); -1 where no map holds it or it has no such neighbour on an axis.
+std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
+                                   std::span<const Surface> surfaces,
+                                   std::span<const shadows::LightProjection> maps, int resolution);
 
 /// @brief Settings from a `key=value,key=value` list of ShadowSettings JSON fields (values: true/false,
 /// numbers, or names), starting from defaults. Throws shadows::SettingsError naming the field.

@@ -210,6 +210,78 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
     return classes;
 }
 
+std::vector<PixelClass> classifyByScreenBand(glm::ivec2 size, std::span<const float> truth,
+                                             std::span<const Surface> surfaces, float bandPixels,
+                                             std::span<const std::uint8_t> edgeWithinBand) {
+    const auto lit = [&](std::size_t j) { return surfaces[j] == Surface::Receiver && truth[j] >= 0.5f; };
+    const auto dark = [&](std::size_t j) {
+        return surfaces[j] == Surface::FacingAway || (surfaces[j] == Surface::Receiver && truth[j] < 0.5f);
+    };
+    // The disc of the band's reach, without its centre; the 8 neighbours even for a band under 1.5 pixels.
+    const int reach = std::max(static_cast<int>(std::floor(bandPixels)), 1);
+    std::vector<glm::ivec2> disc;
+    for (int dy = -reach; dy <= reach; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+            const bool neighbour = std::max(std::abs(dx), std::abs(dy)) == 1;
+            if ((dx != 0 || dy != 0) &&
+                (neighbour || static_cast<float>(dx * dx + dy * dy) <= bandPixels * bandPixels)) {
+                disc.emplace_back(dx, dy);
+            }
+        }
+    }
+    std::vector<PixelClass> classes(truth.size(), PixelClass::Ignored);
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const std::size_t i = indexOf(size, x, y);
+            if (surfaces[i] != Surface::Receiver) {
+                continue;
+            }
+            const bool iLit = lit(i);
+            bool band = !edgeWithinBand.empty() && edgeWithinBand[i];
+            for (std::size_t k = 0; k < disc.size() && !band; ++k) {
+                const int nx = x + disc[k].x;
+                const int ny = y + disc[k].y;
+                if (nx >= 0 && ny >= 0 && nx < size.x && ny < size.y) {
+                    const std::size_t j = indexOf(size, nx, ny);
+                    band = iLit ? dark(j) : lit(j);
+                }
+            }
+            classes[i] = band ? PixelClass::Band : iLit ? PixelClass::Lit : PixelClass::Shadowed;
+        }
+    }
+    return classes;
+}
+
+TexelDensity texelDensity(std::span<const PixelClass> classes, std::span<const float> truth,
+                          std::span<const float> footprints) {
+    std::vector<float> values;
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+        const bool lit =
+            (classes[i] == PixelClass::Lit || classes[i] == PixelClass::Band) && truth[i] >= 0.5f;
+        if (lit && footprints[i] >= 0.0f) {
+            values.push_back(footprints[i]);
+        }
+    }
+    TexelDensity density;
+    density.pixels = values.size();
+    if (values.empty()) {
+        return density;
+    }
+    density.atMostOnePixel =
+        static_cast<double>(std::count_if(values.begin(), values.end(), [](float m) { return m <= 1.0f; })) /
+        static_cast<double>(values.size());
+    const auto nearestRank = [&](double fraction) {
+        const std::size_t rank = std::max<std::size_t>(
+            static_cast<std::size_t>(std::ceil(fraction * static_cast<double>(values.size()))), 1);
+        std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank - 1),
+                         values.end());
+        return static_cast<double>(values[rank - 1]);
+    };
+    density.median = nearestRank(0.5);
+    density.percentile99 = nearestRank(0.99);
+    return density;
+}
+
 ShadowMetrics computeMetrics(std::span<const PixelClass> classes, std::span<const float> truth,
                              std::span<const float> visibility, std::span<const std::uint8_t> concave) {
     ShadowMetrics m;

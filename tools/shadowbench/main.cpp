@@ -43,7 +43,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --light-sweep AZ:EL   point each scene's shadow-casting light from every azimuth x elevation (degrees,
                         comma-separated lists, e.g. 30,150:40,15,5,1); rows are "<scene>-az<A>-el<E>";
                         a spot or point light keeps its distance (engine::aimLight)
-  --band TEXELS         boundary band half-width around true shadow edges   [2]
+  --band WIDTH[UNIT]    boundary band half-width around true shadow edges, not scored for acne and
+                        leak; UNIT px (screen pixels, what a viewer sees) or texels (shadow-map
+                        texels at each receiver)                            [2px]
   --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
   --out DIR             where results.csv, results.json and images go       [bench]: per scene
                         <label>.png (shaded), <label>-classes.png, <label>-error.png, truth.png (the
@@ -175,7 +177,15 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--light-sweep") {
             options.lights = lightSweep(value());
         } else if (arg == "--band") {
-            options.bench.bandTexels = cli::numberIn("--band", value(), 0.0f, 64.0f);
+            std::string band = value();
+            options.bench.bandUnit = shadowbench::BandUnit::Pixels;
+            if (band.ends_with("texels")) {
+                options.bench.bandUnit = shadowbench::BandUnit::Texels;
+                band.resize(band.size() - 6);
+            } else if (band.ends_with("px")) {
+                band.resize(band.size() - 2);
+            }
+            options.bench.bandWidth = cli::numberIn("--band", band, 0.0f, 64.0f);
         } else if (arg == "--soft") {
             const std::string text = value();
             const auto colon = text.find(':');
@@ -311,7 +321,10 @@ int main(int argc, char** argv) {
                 std::cout << "[" << results.size() << "/" << total << "] " << scene->name() << " "
                           << config.label << ": acne " << std::setprecision(3) << m.acneRate << ", leak "
                           << m.leakRate << ", darkening " << m.darkening << ", edges "
-                          << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px, "
+                          << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px (p95 "
+                          << m.edges.trueToRendered.percentile95 << "/" << m.edges.renderedToTrue.percentile95
+                          << "), m<=1 " << m.density.atMostOnePixel << " (p99 " << m.density.percentile99
+                          << " px), "
                           << (results.back().shimmer >= 0.0
                                   ? "shimmer " + std::to_string(results.back().shimmer) + ", "
                                   : std::string())

@@ -44,6 +44,18 @@ struct EdgePlacement {
     EdgeDistances renderedToTrue;
 };
 
+/// @brief How finely the shadow maps sample what the screen shows: Lloyd et al.'s m (the largest extent of
+/// one shadow texel in screen pixels, shadows::glsl::gsTexelFootprintPixels) over the truly lit receiver
+/// pixels (see texelDensity).
+struct TexelDensity {
+    /// Lit receiver pixels with a footprint (held by a map, with a neighbour on the same surface).
+    std::size_t pixels = 0;
+    /// Fraction of them with m <= 1: a texel per pixel or finer.
+    double atMostOnePixel = 0.0;
+    double median = 0.0;
+    double percentile99 = 0.0;
+};
+
 /// @brief One technique's errors against ground truth over one image (see computeMetrics for definitions).
 struct ShadowMetrics {
     std::size_t receivers = 0;
@@ -60,6 +72,8 @@ struct ShadowMetrics {
     double meanAbsoluteError = 0.0;
     double rootMeanSquareError = 0.0;
     EdgePlacement edges;
+    /// Filled by the benchmark for our maps (it knows their projections); empty for the peer's.
+    TexelDensity density;
 };
 
 /// @brief Where each pixel lies across the light's rays, so that the boundary band can be measured in shadow
@@ -93,6 +107,19 @@ struct LightPlane {
 std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
                                  std::span<const Surface> surfaces, const LightPlane& plane, float bandTexels,
                                  int windowPixels = 32);
+
+/// @brief Per-pixel classes of the receivers (`surfaces`) with the band measured on screen, as a viewer sees
+/// it: a receiver is in the band when a pixel of the other truth (as in classify) lies within `bandPixels`
+/// pixels of it (between pixel centres; its 8 neighbours always), or where `edgeWithinBand` marks it (the
+/// other side of its edge hidden from the camera; empty: nowhere).
+std::vector<PixelClass> classifyByScreenBand(glm::ivec2 size, std::span<const float> truth,
+                                             std::span<const Surface> surfaces, float bandPixels,
+                                             std::span<const std::uint8_t> edgeWithinBand = {});
+
+/// @brief Summary of per-pixel texel footprints (`footprints`, pixels; negative: none) over the truly lit
+/// receivers (`classes` Lit or Band with `truth` >= 0.5). The median and 99th percentile are nearest-rank.
+TexelDensity texelDensity(std::span<const PixelClass> classes, std::span<const float> truth,
+                          std::span<const float> footprints);
 
 /// @brief Errors of `visibility` against `truth` over `classes`:
 /// acne rate = lit pixels with visibility < 0.5 / lit pixels; leak rate = shadowed pixels with visibility >
