@@ -91,11 +91,13 @@ std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
     return sizes;
 }
 
-/// The world size of one pixel at each covered pixel across its view ray (0 elsewhere): the eye distance
-/// times a pixel's angle for a perspective camera, the view height over the image's for an orthographic one.
-std::vector<float> viewPixelSizes(const engine::Scene& scene, engine::EntityId camera,
-                                  const std::vector<glm::vec3>& positions,
-                                  const std::vector<std::uint8_t>& covered, glm::ivec2 size) {
+} // namespace
+
+// The eye distance times a pixel's angle for a perspective camera, the view height over the image's for an
+// orthographic one.
+std::vector<float> BenchScene::viewPixelSizes(const engine::Scene& scene, engine::EntityId camera,
+                                              const std::vector<glm::vec3>& positions,
+                                              const std::vector<std::uint8_t>& covered, glm::ivec2 size) {
     const engine::CameraComponent& lens = *scene.entity(camera).camera;
     const glm::vec3 eye(scene.worldMatrix(camera)[3]);
     const float rows = static_cast<float>(std::max(size.y, 1));
@@ -110,7 +112,19 @@ std::vector<float> viewPixelSizes(const engine::Scene& scene, engine::EntityId c
     return sizes;
 }
 
-} // namespace
+// Facing the light by the smoothed normal lights the pixel; by the facet, the truth's rays leave from it:
+// where the two disagree (the terminator of a smoothed mesh) the surface's own facets shadow it, an attached
+// shadow whose edge is neither's to place.
+Surface BenchScene::surfaceFacing(const RayTracedVisibility& tracer, const engine::FrameLight& light,
+                                  const glm::vec3& position, const glm::vec3& normal) {
+    // A sun shines along its direction; spot and point lights from their position.
+    const glm::vec3 toLight = light.light.type == engine::LightType::Directional
+                                  ? -light.direction
+                                  : glm::normalize(light.position - position);
+    const bool facing =
+        glm::dot(normal, toLight) > 0.05f && glm::dot(tracer.facetNormal(position, normal), toLight) > 0.05f;
+    return facing ? Surface::Receiver : Surface::FacingAway;
+}
 
 BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId camera,
                        const BenchOptions& options)
@@ -142,21 +156,11 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
     tracer_ = std::make_unique<RayTracedVisibility>(scene_);
     RayTracedVisibility& tracer = *tracer_;
     tracer.setViewer(glm::vec3(scene_.worldMatrix(camera_)[3]));
-    // Receivers face the light by their smoothed normal, which lights them, and by their facet, which the
-    // truth's rays leave from: where the two disagree (the terminator of a smoothed mesh) the surface's own
-    // facets shadow it, an attached shadow whose edge is neither's to place.
     surfaces_.resize(positions.size(), Surface::None);
     for (std::size_t i = 0; i < positions.size(); ++i) {
-        if (!covered[i]) {
-            continue;
+        if (covered[i]) {
+            surfaces_[i] = surfaceFacing(tracer, light_, positions_[i], normals_[i]);
         }
-        // A sun shines along its direction; spot and point lights from their position.
-        const glm::vec3 toLight = light_.light.type == engine::LightType::Directional
-                                      ? -light_.direction
-                                      : glm::normalize(light_.position - positions_[i]);
-        const bool facing = glm::dot(normals_[i], toLight) > 0.05f &&
-                            glm::dot(tracer.facetNormal(positions_[i], normals_[i]), toLight) > 0.05f;
-        surfaces_[i] = facing ? Surface::Receiver : Surface::FacingAway;
     }
     truth_.resize(positions.size());
     if (options.softSamplesPerAxis > 0) {
@@ -241,6 +245,9 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     }
     if (options_.shimmerFrames > 0) {
         result.shimmer = measureShimmer(scene, config.settings);
+    }
+    if (options_.pathFrames > 0) {
+        result.pathShimmer = measurePathShimmer(scene, config.settings);
     }
     return result;
 }
@@ -467,7 +474,7 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
            "shadow_ms_min,shadow_ms_max,lighting_ms_median,lighting_ms_min,lighting_ms_max,shadow_bytes,"
            "full_kernel_fraction,frame_ms_median,peer,edge_true_to_rendered_mean,edge_true_to_rendered_p95,"
            "edge_rendered_to_true_mean,edge_rendered_to_true_p95,true_edge_pixels,rendered_edge_pixels,"
-           "shimmer,density_pixels,density_m_at_most_1,density_m_p50,density_m_p99\n";
+           "shimmer,density_pixels,density_m_at_most_1,density_m_p50,density_m_p99,path_shimmer\n";
     for (const BenchResult& r : results) {
         const shadows::ShadowSettings& s = r.config.settings;
         const ShadowMetrics& m = r.metrics;
@@ -483,7 +490,8 @@ std::string resultsCsv(const std::vector<BenchResult>& results) {
             << m.edges.trueToRendered.percentile95 << ',' << m.edges.renderedToTrue.mean << ','
             << m.edges.renderedToTrue.percentile95 << ',' << m.edges.trueToRendered.count << ','
             << m.edges.renderedToTrue.count << ',' << r.shimmer << ',' << m.density.pixels << ','
-            << m.density.atMostOnePixel << ',' << m.density.median << ',' << m.density.percentile99 << '\n';
+            << m.density.atMostOnePixel << ',' << m.density.median << ',' << m.density.percentile99 << ','
+            << r.pathShimmer << '\n';
     }
     return csv.str();
 }
@@ -500,6 +508,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["frames"] = options.frames;
     document["band"] = {{"width", options.bandWidth}, {"unit", std::string(toString(options.bandUnit))}};
     document["shimmerFrames"] = options.shimmerFrames;
+    document["pathFrames"] = options.pathFrames;
     document["groundTruth"] = options.softSamplesPerAxis > 0 ? "soft" : "hard";
     nlohmann::json list = nlohmann::json::array();
     for (const BenchResult& r : results) {
@@ -547,6 +556,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"shadowBytes", r.shadowBytes},
              {"fullKernelFraction", r.fullKernelFraction},
              {"shimmer", r.shimmer},
+             {"pathShimmer", r.pathShimmer},
              {"shadowMaps", r.shadowMaps},
              {"image", r.shadedImage.string()}});
     }

@@ -156,8 +156,8 @@ void PrintTo(const LargeView& view, std::ostream* out) {
 /// Defaults sweep where the techniques comparing along the receiver's plane kept acne and `vsm` leaked
 /// (docs/SHADOWS.md, "Half a texel for relief", "Light-bleeding reduction 0.4"), and seen by a camera 10 m
 /// above its ground; the apron (vehicles, poles and wires over 300 m, the camera 8 m up) under an 8° and a 3°
-/// sun, as one mesh and one mesh per object. One fitted map spans each of them: staircase edges of several
-/// pixels under every technique.
+/// sun, as one mesh and one mesh per object. Fitted to the visible samples, the apron meets the floor (but
+/// for gsm's acne under a 3° sun); the terrain's edges still miss it by several pixels.
 class LargeViewBenchGLTest : public testing::TestWithParam<LargeView> {};
 
 } // namespace
@@ -176,45 +176,23 @@ TEST_P(LargeViewBenchGLTest, EveryTechniqueAtItsDefaultsMeetsTheFloor) {
 
 using T = ShadowTechnique;
 
-INSTANTIATE_TEST_SUITE_P(Views, LargeViewBenchGLTest,
-                         testing::Values(LargeView{"terrain", engine::LightAngles{30.0f, 40.0f}, {7.2, 23.0}},
-                                         LargeView{"terrain", engine::LightAngles{30.0f, 5.0f}, {2.8, 15.0}},
-                                         LargeView{"terrain", engine::LightAngles{30.0f, 1.0f}, {6.6, 54.0}},
-                                         LargeView{
-                                             "terrain", engine::LightAngles{210.0f, 40.0f}, {8.1, 32.0}},
-                                         LargeView{"terrain-low", {}, {6.7, 35.0}},
-                                         LargeView{"apron-merged",
-                                                   engine::LightAngles{75.0f, 8.0f},
-                                                   {1.9,
-                                                    8.8,
-                                                    {{T::HardwarePcf, {0.0016, 0.024}},
-                                                     {T::Pcf, {0.0, 0.0087}},
-                                                     {T::Msm, {0.0, 0.0044}},
-                                                     {T::JitteredPcf, {0.0011, 0.021}},
-                                                     {T::PcfGsmConnected, {0.0, 0.0011}}}}},
-                                         LargeView{"apron-merged",
-                                                   engine::LightAngles{75.0f, 3.0f},
-                                                   {1.5,
-                                                    6.0,
-                                                    {{T::HardwarePcf, {0.0016, 0.0}},
-                                                     {T::PcfGsmPointGradient, {0.0, 0.0014}},
-                                                     {T::PcfGsmNearer, {0.0, 0.0014}},
-                                                     {T::JitteredPcf, {0.00091, 0.0}},
-                                                     {T::PcfGsmConnected, {0.0, 0.0014}}}}},
-                                         LargeView{"apron",
-                                                   engine::LightAngles{75.0f, 8.0f},
-                                                   {1.7,
-                                                    8.8,
-                                                    {{T::HardwarePcf, {0.0011, 0.033}},
-                                                     {T::Pcf, {0.0, 0.012}},
-                                                     {T::Vsm, {0.0, 0.0011}},
-                                                     {T::Msm, {0.0, 0.0033}},
-                                                     {T::JitteredPcf, {0.0, 0.028}}}}}),
-                         [](const auto& test) {
-                             std::string name = test.param.label();
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Views, LargeViewBenchGLTest,
+    testing::Values(LargeView{"terrain", engine::LightAngles{30.0f, 40.0f}, {7.7, 21.0}},
+                    LargeView{"terrain", engine::LightAngles{30.0f, 5.0f}, {2.7, 15.0}},
+                    LargeView{"terrain", engine::LightAngles{30.0f, 1.0f}, {5.7, 49.0}},
+                    LargeView{"terrain", engine::LightAngles{210.0f, 40.0f}, {7.0, 29.0}},
+                    LargeView{"terrain-low", {}, {1.9, 8.5}},
+                    LargeView{"apron-merged", engine::LightAngles{75.0f, 8.0f}, {}},
+                    LargeView{"apron-merged",
+                              engine::LightAngles{75.0f, 3.0f},
+                              {kEdgeMeanFloor, kEdgePercentile95Floor, {{T::Gsm, {0.0011, 0.0}}}}},
+                    LargeView{"apron", engine::LightAngles{75.0f, 8.0f}, {}}),
+    [](const auto& test) {
+        std::string name = test.param.label();
+        std::replace(name.begin(), name.end(), '-', '_');
+        return name;
+    });
 
 TEST(ShimmerGLTest, SnappedCascadesDoNotShimmerAndUnsnappedOnesDo) {
     const engine::HeadlessContext& context = glTestContext();
@@ -250,9 +228,7 @@ TEST_P(EveryLightBenchGLTest, EveryTechniqueAtItsDefaultsMeetsTheFloor) {
     const ShadowBench bench(context, options);
     const std::string name = GetParam();
     const auto scene = bench.prepare(name, std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".gltf"));
-    // The outdoor scene's cascades are fitted to mesh bounds: staircase edges, and gsm's acne on far slopes.
-    const FloorExceptions outdoor{8.3, 63.0, {{ShadowTechnique::Gsm, {0.0012, 0.0}}}};
-    expectDefaultsMeetTheFloor(bench, *scene, name, true, name == "outdoor" ? outdoor : FloorExceptions{});
+    expectDefaultsMeetTheFloor(bench, *scene, name, true);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryLightBenchGLTest, testing::Values("room", "outdoor"),
@@ -303,8 +279,46 @@ TEST(TexelDensityGLTest, TheDensityViewShowsTheFootprintsTheBenchMeasures) {
         EXPECT_GT(compared, 10000u);
         EXPECT_GT(static_cast<double>(agree), 0.97 * static_cast<double>(compared)) << resolution;
         if (resolution == 256) {
-            EXPECT_GT(coarse, compared / 2)
-                << "a 256² map should be coarser than the screen on most of the knob";
+            EXPECT_GT(coarse, compared / 4)
+                << "a 256² map should be coarser than the screen on much of the knob";
         }
     }
+}
+
+// Shimmer while the camera itself moves and turns (measurePathShimmer), one hardware comparison per pixel, so
+// the edges are the maps' texel staircases. The knob's single map covers the knob's whole shadow, which stays
+// in view, so its fit barely follows the camera: a 256² map adds mostly coarser edges, which the nearest
+// pixel (up to 0.7 pixels off the reprojected point) straddles where the truth's edge is not. Six frames move
+// the image about 2 pixels per step, so a comparison with the same pixel instead of the reprojected one finds
+// no pixel of the same surface and measures 0; one that ignores the truth measures 1.5e-3 with the 2048² map.
+TEST(PathShimmerGLTest, AFineSnappedMapBarelyFlickersAndACoarseOneFlickersMore) {
+    const engine::HeadlessContext& context = glTestContext();
+    BenchOptions options;
+    options.size = {160, 120};
+    options.timing = false;
+    options.pathFrames = 6;
+    const ShadowBench bench(context, options);
+    const auto scene = bench.prepare("knob", std::filesystem::path(CONTENT_DIR) / "scenes" / "knob.gltf");
+    shadows::ShadowSettings settings;
+    settings.technique = ShadowTechnique::NormalOffset;
+    settings.cascadeCount = 1;
+    settings.resolution = 2048;
+    const double fine = bench.measurePathShimmer(*scene, settings);
+    settings.resolution = 256;
+    settings.texelSnapping = false;
+    const double coarse = bench.measurePathShimmer(*scene, settings);
+    // Printed, not bounded: whether snapping steadies cascades depends on what they are fitted to.
+    settings.cascadeCount = 3;
+    settings.resolution = 512;
+    settings.texelSnapping = true;
+    const double snappedCascades = bench.measurePathShimmer(*scene, settings);
+    settings.texelSnapping = false;
+    const double unsnappedCascades = bench.measurePathShimmer(*scene, settings);
+    std::cout << "[ measured ] knob, camera path of " << options.pathFrames
+              << " frames: path shimmer 2048² snapped " << fine << ", 256² unsnapped " << coarse
+              << ", 3 cascades of 512² snapped " << snappedCascades << ", unsnapped " << unsnappedCascades
+              << "\n";
+    // Measured 2.35e-4 and 3.9x.
+    EXPECT_LT(fine, 5e-4);
+    EXPECT_GT(coarse, 2.0 * fine);
 }

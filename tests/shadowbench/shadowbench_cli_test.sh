@@ -38,6 +38,17 @@ grep -q '"renderedToTrue"' "$out/sweep/results.json" || fail "results.json lacks
 grep -Eq '^knob,([a-z-]+),\1,' "$out/default/results.csv" && ! grep -q ',default,' "$out/default/results.csv" ||
     fail "--techniques default did not run a named technique"
 
+# Shimmer along a camera path: a path_shimmer column at the end, measured (not -1); a path of no frames refused.
+"$bench" --scene knob --techniques normal-offset --defaults --accuracy-only --shimmer-path 2 --size 48x36 \
+    --out "$out/path" > "$out.path.log" 2>&1 || fail "--shimmer-path exited $?: $(cat "$out.path.log")"
+head -1 "$out/path/results.csv" | grep -q ',path_shimmer$' || fail "results.csv lacks the path_shimmer column"
+awk -F, 'NR == 2 { found = 1; measured = ($NF >= 0) } END { exit !(found && measured) }' "$out/path/results.csv" ||
+    fail "--shimmer-path wrote no path shimmer"
+grep -q '"pathFrames": 2' "$out/path/results.json" || fail "results.json lacks pathFrames"
+grep -q 'path shimmer' "$out.path.log" || fail "the progress line lacks the path shimmer"
+"$bench" --shimmer-path 0 --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 2 ]] && grep -q -- "--shimmer-path: '0'" "$out.bad" || fail "--shimmer-path 0 not refused"
+
 "$bench" --techniques nonsense --out "$out/x" > "$out.bad" 2>&1
 [[ $? -eq 2 ]] && grep -q "unknown technique 'nonsense'" "$out.bad" || fail "unknown technique not refused"
 "$bench" --config "x:pcfTaps=99" --out "$out/x" > "$out.bad" 2>&1

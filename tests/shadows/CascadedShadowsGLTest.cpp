@@ -200,10 +200,6 @@ TEST(CascadedShadowsGLTest, MoreCascadesGiveFinerTexelsNearTheCamera) {
 TEST(CascadedShadowsGLTest, TheAutomaticCountGivesALongViewCascadesAndAModelOne) {
     engine::EntityId camera = engine::kNoEntity;
     const engine::Scene ground = openGround(camera);
-    ShadowSettings settings; // cascadeCount 0: automatic
-    settings.resolution = 128;
-    EXPECT_EQ(ShadowMeasurement::render(ground, camera, settings, {64, 36}).projections.size(),
-              2u); // 0.3-300 m
     engine::Scene model = testsupport::boxOnPlane(4.0f, 1.0f);
     const auto sun = model.create("sun");
     model.entity(sun).light = engine::LightComponent{};
@@ -211,18 +207,32 @@ TEST(CascadedShadowsGLTest, TheAutomaticCountGivesALongViewCascadesAndAModelOne)
     const auto view = model.create("camera");
     model.entity(view).camera = engine::CameraComponent{};
     model.entity(view).transform = engine::Transform::lookAt({0.0f, 3.0f, 4.0f}, {0.0f, 0.0f, 0.0f});
+
+    ShadowSettings settings; // cascadeCount 0: automatic
+    // Fitted to bounds: one more cascade per decade of the visible boxes' depth range beyond 1000:1.
+    settings.directionalFit = DirectionalFit::Bounds;
+    settings.resolution = 128;
+    EXPECT_EQ(ShadowMeasurement::render(ground, camera, settings, {64, 36}).projections.size(),
+              2u); // 0.3-300 m
     EXPECT_EQ(ShadowMeasurement::render(model, view, settings, {64, 36}).projections.size(), 1u);
+    // Fitted to samples: the fewest cascades whose texels are no larger than the pixels at their near end.
+    // 300 m of ground seen from 1.5 m needs all four at 640x360; the model one map, even at 256².
+    settings.directionalFit = DirectionalFit::Samples;
+    settings.resolution = 2048;
+    EXPECT_EQ(ShadowMeasurement::render(ground, camera, settings, {640, 360}).projections.size(), 4u);
+    settings.resolution = 256;
+    EXPECT_EQ(ShadowMeasurement::render(model, view, settings, {640, 360}).projections.size(), 1u);
 }
 
 TEST(CascadedShadowsGLTest, CascadesWithoutVisibleReceiversAreNotDrawn) {
-    // Receivers near the camera and far away, nothing between: with uniform splits the middle slices are
-    // empty, and their maps are not drawn.
+    // Receivers near the camera and far away (beside the near one, so both are seen), nothing between: with
+    // uniform splits the middle slices are empty, and their maps are not drawn, by either fit.
     engine::Scene scene;
     for (const float z : {-2.0f, -280.0f}) {
         const auto block = scene.create("block");
         scene.entity(block).mesh =
             engine::MeshComponent{std::make_shared<engine::MeshData>(engine::primitives::cube(1.0f))};
-        scene.entity(block).transform.translation = {0.0f, 0.0f, z};
+        scene.entity(block).transform.translation = {z < -100.0f ? 40.0f : 0.0f, 0.0f, z};
         scene.entity(block).transform.scale = glm::vec3(-z * 0.2f);
     }
     const auto sun = scene.create("sun");
@@ -236,8 +246,11 @@ TEST(CascadedShadowsGLTest, CascadesWithoutVisibleReceiversAreNotDrawn) {
     settings.cascadeCount = 4;
     settings.cascadeSplitWeight = 0.0f;
     settings.resolution = 128;
-    const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {64, 36});
-    EXPECT_EQ(m.projections.size(), 2u);
+    for (const DirectionalFit fit : {DirectionalFit::Samples, DirectionalFit::Bounds}) {
+        settings.directionalFit = fit;
+        const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, {64, 36});
+        EXPECT_EQ(m.projections.size(), 2u) << (fit == DirectionalFit::Samples ? "samples" : "bounds");
+    }
 }
 
 TEST(CascadedShadowsGLTest, StableCascadesDoNotShimmerWhileTheCameraMovesBySubTexelSteps) {

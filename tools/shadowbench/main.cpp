@@ -38,6 +38,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --shimmer N           also measure shimmer: the maps' fit moves a third of a texel per frame for N
                         frames while the camera stays; the fraction of receiver pixels whose visibility
                         changes by more than 0.5 between frames (0 for snapped cascades)
+  --shimmer-path N      also measure shimmer along a camera path: the camera moves and turns a little
+                        over N frames, the maps fitted to each; the fraction of receiver pixels,
+                        followed by reprojection, whose visibility flips while the truth's does not
   --defaults            each technique once, at its defaults (ignores --taps, --radius, --resolutions,
                         --formats); rows are labelled with the technique's name
   --light-sweep AZ:EL   point each scene's shadow-casting light from every azimuth x elevation (degrees,
@@ -170,6 +173,8 @@ Options parse(int argc, char** argv) {
             options.bench.frames = cli::integerIn("--frames", value(), 1, 1000);
         } else if (arg == "--shimmer") {
             options.bench.shimmerFrames = cli::integerIn("--shimmer", value(), 1, 1000);
+        } else if (arg == "--shimmer-path") {
+            options.bench.pathFrames = cli::integerIn("--shimmer-path", value(), 1, 1000);
         } else if (arg == "--defaults") {
             options.defaults = true;
         } else if (arg == "--accuracy-only") {
@@ -327,6 +332,9 @@ int main(int argc, char** argv) {
                           << " px), "
                           << (results.back().shimmer >= 0.0
                                   ? "shimmer " + std::to_string(results.back().shimmer) + ", "
+                                  : std::string())
+                          << (results.back().pathShimmer >= 0.0
+                                  ? "path shimmer " + std::to_string(results.back().pathShimmer) + ", "
                                   : std::string())
                           << "shadow " << results.back().shadowPass.median << " ms, lighting "
                           << results.back().lightingPass.median << " ms; " << std::fixed

@@ -1,4 +1,5 @@
 #include <shadows/LightFrustum.h>
+#include <shadows/SampleDistribution.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -231,13 +232,11 @@ FrustumCorners frustumCorners(const glm::mat4& projection) {
 
 } // namespace
 
-LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4& cameraViewProjection,
-                                    std::span<const Aabb> boxes, int resolution, bool snapToTexels) {
-    LightProjection result;
-    result.view = lightRotation(direction);
-
+Aabb shadowableRegion(const glm::vec3& direction, const glm::mat4& cameraViewProjection,
+                      std::span<const Aabb> boxes) {
+    const glm::mat4 view = lightRotation(direction);
     Aabb frustum; // the camera frustum in light space
-    const glm::mat4 clipToLight = result.view * glm::inverse(cameraViewProjection);
+    const glm::mat4 clipToLight = view * glm::inverse(cameraViewProjection);
     for (const float x : {-1.0f, 1.0f}) {
         for (const float y : {-1.0f, 1.0f}) {
             for (const float z : {-1.0f, 1.0f}) {
@@ -246,15 +245,14 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
             }
         }
     }
-    // The map covers where a visible receiver can be shadowed: the part of each receiver in view (clipped to
-    // the camera frustum's light-space extent) under some caster that reaches nearer the light than the
-    // receiver's far side (the light looks down -z). A directional light's shadow falls within its caster's
-    // light-space extent, so a model on a large ground plane gets the texels of its own footprint, not of the
-    // ground in view, and receivers outside the map are lit (the lighting pass reads nothing there).
+    // The part of each receiver in view (clipped to the camera frustum's light-space extent) under some
+    // caster that reaches nearer the light than the receiver's far side (the light looks down -z). A
+    // directional light's shadow falls within its caster's light-space extent, so a model on a large ground
+    // plane gets the texels of its own footprint, not of the ground in view.
     std::vector<Aabb> lightBoxes;
     lightBoxes.reserve(boxes.size());
     for (const Aabb& box : boxes) {
-        lightBoxes.push_back(box.empty() ? Aabb{} : box.transformed(result.view));
+        lightBoxes.push_back(box.empty() ? Aabb{} : box.transformed(view));
     }
     Aabb covered;
     for (std::size_t r = 0; r < boxes.size(); ++r) {
@@ -262,7 +260,7 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
         if (visible.empty()) {
             continue;
         }
-        const Aabb receiver = visible.transformed(result.view);
+        const Aabb receiver = visible.transformed(view);
         const glm::vec2 receiverLow = glm::max(glm::vec2(receiver.min), glm::vec2(frustum.min));
         const glm::vec2 receiverHigh = glm::min(glm::vec2(receiver.max), glm::vec2(frustum.max));
         for (std::size_t c = 0; c < boxes.size(); ++c) {
@@ -278,6 +276,15 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
             }
         }
     }
+    return covered;
+}
+
+LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4& cameraViewProjection,
+                                    std::span<const Aabb> boxes, int resolution, bool snapToTexels) {
+    LightProjection result;
+    result.view = lightRotation(direction);
+    // Receivers outside the region are lit (the lighting pass reads nothing there).
+    const Aabb covered = shadowableRegion(direction, cameraViewProjection, boxes);
     if (covered.empty()) {
         return result;
     }
@@ -325,6 +332,62 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
     const glm::vec2 aboveCovered = (centre + half) - glm::vec2(covered.max);
     const float coveredToEdge = std::min({belowCovered.x, belowCovered.y, aboveCovered.x, aboveCovered.y});
     result.litBorderTexels = std::max(std::floor(coveredToEdge / result.texelScale), 0.0f);
+    result.valid = true;
+    return result;
+}
+
+glm::mat4 lightView(const glm::vec3& direction) {
+    return lightRotation(direction);
+}
+
+LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
+                             std::span<const Aabb> boxes, int resolution, float marginTexels,
+                             bool snapToTexels) {
+    LightProjection result;
+    const glm::vec3 size = samples.max - samples.min;
+    if (samples.empty() || resolution < 16 || !(size.x >= 0.0f && size.y >= 0.0f && size.z >= 0.0f) ||
+        !std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z)) {
+        return result;
+    }
+    result.view = lightRotation(direction);
+    // The samples, their kernels' reach and a texel of slack for the snapped origin inside the map: the texel
+    // follows from fitting that many texels fewer than the resolution across the samples' box.
+    const float slack = std::max(marginTexels, 0.0f) + 1.0f;
+    const float samplesExtent = std::max({size.x, size.y, 1e-6f * std::max(glm::length(samples.max), 1.0f)});
+    float extent = samplesExtent * static_cast<float>(resolution) /
+                   std::max(static_cast<float>(resolution) - 2.0f * slack, 1.0f);
+    glm::vec2 centre = 0.5f * (glm::vec2(samples.min) + glm::vec2(samples.max));
+    if (snapToTexels) {
+        const float unit = std::exp2(std::floor(std::log2(extent)) - 3.0f);
+        extent = std::ceil(extent / unit) * unit;
+        const float texel = extent / static_cast<float>(resolution);
+        centre = glm::floor(centre / texel) * texel;
+    }
+    const glm::vec2 half(0.5f * extent);
+    float nearest = samples.max.z; // towards the light
+    for (const Aabb& box : boxes) {
+        if (const std::optional<glm::vec2> span =
+                depthSpanOver(box, result.view, centre - half, centre + half)) {
+            nearest = std::max(nearest, span->y);
+        }
+    }
+    float farthest = samples.min.z;
+    const float span = std::max(nearest - farthest, 1e-6f * std::max(std::abs(nearest), 1.0f));
+    float depthMargin = 0.01f * span;
+    if (snapToTexels) {
+        const float step = std::exp2(std::floor(std::log2(span)) - 3.0f);
+        nearest = std::ceil((nearest + depthMargin) / step) * step;
+        farthest = std::floor((farthest - depthMargin) / step) * step;
+        depthMargin = 0.0f;
+    }
+    result.projection = glm::ortho(centre.x - half.x, centre.x + half.x, centre.y - half.y, centre.y + half.y,
+                                   -nearest - depthMargin, -farthest + depthMargin);
+    result.worldToShadow = kClipToTexture * result.projection * result.view;
+    result.texelScale = extent / static_cast<float>(resolution);
+    const glm::vec2 below = glm::vec2(samples.min) - (centre - half);
+    const glm::vec2 above = (centre + half) - glm::vec2(samples.max);
+    const float toEdge = std::min({below.x, below.y, above.x, above.y});
+    result.litBorderTexels = std::max(std::floor(toEdge / result.texelScale) - 2.0f, 0.0f);
     result.valid = true;
     return result;
 }

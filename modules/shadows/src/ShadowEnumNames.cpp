@@ -41,6 +41,13 @@ std::span<const EnumName<DepthFormat>> enumNames() {
 }
 
 template <>
+std::span<const EnumName<DirectionalFit>> enumNames() {
+    static constexpr std::array<EnumName<DirectionalFit>, 2> names{
+        {{DirectionalFit::Samples, "samples"}, {DirectionalFit::Bounds, "bounds"}}};
+    return names;
+}
+
+template <>
 std::span<const EnumName<CasterFaces>> enumNames() {
     static constexpr std::array<EnumName<CasterFaces>, 3> names{
         {{CasterFaces::Both, "both"}, {CasterFaces::Front, "front"}, {CasterFaces::Back, "back"}}};

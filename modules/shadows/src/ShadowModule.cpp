@@ -2,6 +2,7 @@
 #include "ShadowBlock.h"
 #include "ShadowMapArray.h"
 #include "ShadowSamplers.h"
+#include "VisibleSamples.h"
 
 #include <shadows/ShadowModule.h>
 #include <shadows/VisibilityMath.h>
@@ -13,6 +14,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <iostream>
 #include <span>
 #include <stdexcept>
 
@@ -103,6 +105,7 @@ void ShadowModule::attach(engine::ModuleHost& host) {
 
 void ShadowModule::detach() {
     releaseResources();
+    samples_.reset();
     shadowBlock_.reset();
     samplers_.reset();
     jitter_.reset();
@@ -141,6 +144,72 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         depthKey_ = variantKey(plan_.depthDefines);
         dirty_ = false;
     }
+}
+
+bool ShadowModule::fitToVisibleSamples(const engine::FrameContext& frame, const engine::FrameLight& light,
+                                       const FitView& fit, std::span<const Aabb> boxes,
+                                       LightMapsBlock& maps) {
+    if (!samples_) {
+        samples_ = std::make_unique<VisibleSamples>();
+    }
+    const auto bounds = samples_->measure(*host_, frame, fit, lightView(light.direction),
+                                          settings_.cascadeSplitWeight, settings_.cascadeBlend);
+    if (!bounds) {
+        if (!warnedNoSamples_) {
+            std::cerr
+                << "shadows: the view shows no surface to fit the directional maps to (an empty view, or "
+                   "the camera inside geometry): fitted to mesh bounds instead\n";
+            warnedNoSamples_ = true;
+        }
+        return false;
+    }
+    // Only the samples a caster can shadow need texels.
+    const Aabb shadowable = shadowableRegion(light.direction, fit.projection * fit.view, boxes);
+    std::array<LightRect, kSampleSlices> slices{};
+    for (std::size_t s = 0; s < slices.size(); ++s) {
+        slices[s] = clippedTo(bounds->slices[s], shadowable);
+    }
+    const int resolution = settings_.resolution;
+    const int count = settings_.cascadeCount > 0
+                          ? settings_.cascadeCount
+                          : densityCascadeCount(slices, bounds->sliceDepths, resolution, fit.projection,
+                                                frame.target.size.y);
+    const auto fitted = [&](int cascade) {
+        return fitToSamples(light.direction,
+                            slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], boxes,
+                            resolution, plan_.kernelReachTexels, settings_.texelSnapping);
+    };
+    if (count == 1) {
+        maps.slots.x = addSlot(light.index, fitted(0));
+        maps.kind.x =
+            static_cast<std::int32_t>(maps.slots.x >= 0 ? LightMapsKind::Single : LightMapsKind::None);
+        return true;
+    }
+    bool any = false;
+    for (int cascade = 0; cascade < count; ++cascade) {
+        const auto slice = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
+        // The split itself, not the slice, which starts earlier by the previous cascade's blend band.
+        maps.splitNear[cascade] = cascade == 0 ? bounds->viewDepth.x : bounds->sliceDepths[slice - 1].y;
+        maps.splitFar[cascade] = bounds->sliceDepths[slice].y;
+        if (!slices[slice].empty()) {
+            maps.slots[cascade] = addSlot(light.index, fitted(cascade));
+            any = any || maps.slots[cascade] >= 0;
+        }
+    }
+    maps.kind = glm::ivec4(static_cast<std::int32_t>(any ? LightMapsKind::Cascades : LightMapsKind::None),
+                           count, 0, 0);
+    return true;
+}
+
+int ShadowModule::addSlot(int lightIndex, const LightProjection& projection) {
+    if (!projection.valid || slots_.size() == static_cast<std::size_t>(kMaxMaps)) {
+        return -1;
+    }
+    slots_.push_back({lightIndex, projection});
+    return static_cast<int>(slots_.size()) - 1;
+}
+
+void ShadowModule::fitMaps(const engine::FrameContext& frame) {
     // World bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
     std::vector<Aabb> boxes;
     host_->forEachMeshBounds(frame.scene, [&](engine::EntityId, const glm::mat4& model, const Aabb& local) {
@@ -162,13 +231,7 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
             continue;
         }
         // The slot of a fitted map, -1 when it has nothing to draw or every slot is taken.
-        const auto add = [&](const LightProjection& projection) {
-            if (!projection.valid || slots_.size() == static_cast<std::size_t>(kMaxMaps)) {
-                return -1;
-            }
-            slots_.push_back({light.index, projection});
-            return static_cast<int>(slots_.size()) - 1;
-        };
+        const auto add = [&](const LightProjection& projection) { return addSlot(light.index, projection); };
         const auto kind = [&](LightMapsKind drawn) {
             const bool any = glm::any(glm::greaterThanEqual(maps.slots, glm::ivec4(0))) ||
                              glm::any(glm::greaterThanEqual(maps.faceSlots, glm::ivec4(0)));
@@ -176,6 +239,10 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
         };
         switch (light.light.type) {
         case engine::LightType::Directional: {
+            if (settings_.directionalFit == DirectionalFit::Samples &&
+                fitToVisibleSamples(frame, light, fit, boxes, maps)) {
+                break;
+            }
             const int count = settings_.cascadeCount > 0
                                   ? settings_.cascadeCount
                                   : automaticCascadeCount(visibleRange.value_or(glm::vec2(1.0f)));
@@ -234,6 +301,8 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
+    // Fitted here rather than in prepareFrame, so the pass timing includes the view's sample pass.
+    fitMaps(frame);
     if (slots_.empty()) {
         return;
     }

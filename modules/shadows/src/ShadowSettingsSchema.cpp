@@ -205,20 +205,25 @@ const std::vector<SettingRow>& rows() {
                                       .qualifier = "and below jitterTaps"});
                     }},
          jittered},
+        {"directionalFit", "", "directional fit",
+         "What directional maps are fitted to. samples: a depth pass of the view is reduced on the GPU to "
+         "the visible samples' depth range and, per cascade, their light-space rectangle (Sample "
+         "Distribution Shadow Maps, Lauritzen et al. 2011); the automatic cascade count is the fewest whose "
+         "slices have a texel no larger than a pixel at their near end. bounds: mesh bounding boxes (one map "
+         "over where visible boxes can be shadowed, cascades around the view frustum's slices). A view with "
+         "no visible sample falls back to bounds, saying so once.",
+         choice<DirectionalFit, &S::directionalFit>(), always, "--fit"},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},
         {"cascadeCount", "", "cascades",
-         "Cascades of each directional light's shadow map. 1: one map over where receivers in view can be "
-         "shadowed. 2-4: "
-         "the "
-         "view's depth range of visible receivers is split by the practical split scheme, each slice gets a "
-         "map "
-         "around its bounding sphere, snapped to texels; a cascade no visible receiver falls in is not "
-         "drawn. "
-         "0: automatic: one map below a depth range of 1000:1, one more cascade per decade beyond, so a "
-         "model "
-         "keeps its one tight map and a landscape seen from the ground gets cascades.",
+         "Cascades of each directional light's shadow map. 1: one map over where visible receivers can be "
+         "shadowed. 2-4: the view depths of visible receivers (the samples' range, or the visible boxes') are "
+         "split by the practical split scheme, each slice gets a map (around its samples, or around its "
+         "bounding sphere), snapped to texels; a cascade no visible receiver falls in is not drawn. 0: "
+         "automatic: fitted to samples, the fewest cascades whose texels are no larger than a pixel at each "
+         "slice's near end (else 4); fitted to bounds, one map below a depth range of 1000:1 and one more "
+         "cascade per decade beyond.",
          IntSetting{&S::cascadeCount,
                     [](const S&) { return fixed({.min = 1, .max = kMaxCascades, .zeroAllowed = true}); }},
          always, "--cascades"},

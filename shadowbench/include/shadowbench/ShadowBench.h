@@ -60,6 +60,10 @@ struct BenchResult {
     /// the view the maps are fitted to moves in sub-texel steps and the observer stays (measureShimmer);
     /// negative when not measured.
     double shimmer = -1.0;
+    /// Fraction of receiver pixels, followed from frame to frame by reprojection while the camera itself
+    /// moves (measurePathShimmer), whose visibility flips while the truth's does not; negative when not
+    /// measured.
+    double pathShimmer = -1.0;
     std::filesystem::path shadedImage;
     /// The shaded frame (also written to shadedImage), for side-by-side sheets.
     engine::Image shaded;
@@ -120,6 +124,9 @@ struct BenchOptions {
     float softRadius = 0.01f;
     /// Frames of the shimmer measurement (measureShimmer); 0 does not measure it. Default 0.
     int shimmerFrames = 0;
+    /// Frames of the camera path of the path shimmer measurement (measurePathShimmer); 0 does not measure it.
+    /// Default 0.
+    int pathFrames = 0;
     /// Folder for the images (classification, error heat map, shaded). Default "bench".
     std::filesystem::path imageFolder = "bench";
 };
@@ -148,12 +155,22 @@ private:
     /// World size of one pixel at each covered pixel, across the view ray: a pixel band's reach off the
     /// image.
     std::vector<float> pixelSizes_;
-    // Kept for the band: where the light reaches near a shadowed receiver depends on the maps' texel sizes.
+    // Kept for the band: where the light reaches near a shadowed receiver depends on the maps' texel sizes;
+    // and for the truth of the path shimmer's moved views (only the camera moves, so the BVH still holds).
     std::unique_ptr<RayTracedVisibility> tracer_;
     // The classes depend on the truth and the maps' texel sizes only: configurations with the same map layout
     // (every technique at its defaults) share one classification.
     mutable std::vector<float> classifiedTexelSizes_;
     mutable std::vector<PixelClass> classes_;
+
+    /// Receiver where the pixel at `position` faces `light` by its smoothed `normal` and by the facet the
+    /// tracer's viewer sees there, FacingAway otherwise: one rule for the scene's view and the path's.
+    static Surface surfaceFacing(const RayTracedVisibility& tracer, const engine::FrameLight& light,
+                                 const glm::vec3& position, const glm::vec3& normal);
+    /// The world size of one pixel at each covered pixel across its view ray from `camera`, 0 elsewhere.
+    static std::vector<float> viewPixelSizes(const engine::Scene& scene, engine::EntityId camera,
+                                             const std::vector<glm::vec3>& positions,
+                                             const std::vector<std::uint8_t>& covered, glm::ivec2 size);
 };
 
 /// @brief Runs configurations on prepared scenes: accuracy against ground truth and per-pass timing.
@@ -189,6 +206,20 @@ public:
     /// (stable) fits give 0: their maps do not change.
     [[nodiscard]] double measureShimmer(const BenchScene& scene,
                                         const shadows::ShadowSettings& settings) const;
+
+    /// @brief Shimmer of `settings` while the camera moves: from the scene's camera it moves 4 % of the
+    /// distance to the surface at the image's centre along its right + forward direction and turns 3° right
+    /// about the world's up axis, in options().pathFrames equal steps, the maps fitted to each frame's view.
+    /// Each frame's receivers are reprojected into the previous frame and compared with the nearest pixel
+    /// there when it is a receiver within 1.5 pixel sizes of the same point (otherwise it was hidden or off
+    /// the image); the fraction of those whose visibility changes by more than 0.5 while the hard ray-traced
+    /// truth's does not, over all frame pairs. The nearest pixel lies up to 0.7 pixels off the point, so
+    /// the truth flips where the pair straddles a true shadow edge, and those pairs do not count.
+    /// Maps that do not move still score above 0 where a rendered edge lies off the true one, so that the
+    /// pair straddles it alone: the coarser the map, the more (on the knob over 8 frames 2.1e-4 with 2048²,
+    /// 8e-4 with 256²).
+    [[nodiscard]] double measurePathShimmer(const BenchScene& scene,
+                                            const shadows::ShadowSettings& settings) const;
 
     /// @brief The scene drawn without shadows: counts and whole-frame times.
     [[nodiscard]] SceneCost measureCost(const BenchScene& scene) const;

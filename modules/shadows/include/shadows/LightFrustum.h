@@ -15,6 +15,8 @@ namespace shadows {
 /// @brief World-space axis-aligned box (the engine's).
 using Aabb = engine::Aabb;
 
+struct LightRect; // shadows/SampleDistribution.h
+
 /// @brief The view and projection a shadow map is rendered with.
 struct LightProjection {
     /// World → light view space.
@@ -112,6 +114,30 @@ Sphere frustumSliceSphere(const glm::mat4& projection, float sliceNear, float sl
 /// so casters outside the view still cast. Invalid when the slice is empty.
 LightProjection fitCascade(const glm::vec3& direction, const FitView& view, float sliceNear, float sliceFar,
                            std::span<const Aabb> boxes, int resolution, bool snapToTexels);
+
+/// @brief Fits the orthographic map of a directional light shining along `direction` to the visible samples
+/// it must hold: their light-space box `samples` (x, y in the frame of lightView(direction); z towards the
+/// light), widened by `marginTexels` texels (the lookups' kernel reach) and a texel of snapping slack. With
+/// `snapToTexels` its extent is quantised to 1/8-octave steps and its origin to whole texels, and its depth
+/// range to steps of an eighth of an octave of its span, so a moving camera changes it rarely (SDSM's known
+/// weakness is flashing as the fit follows the samples). Depth: from the deepest sample to the nearest caster
+/// over the map (the part of every box over it, towards the light), so casters outside the view still cast.
+/// Beyond the samples' box, less two texels for the receiver's own offsets, is the lit border. Invalid when
+/// `samples` is empty or not finite.
+LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
+                             std::span<const Aabb> boxes, int resolution, float marginTexels,
+                             bool snapToTexels);
+
+/// @brief Where a directional light shining along `direction` can shadow a receiver in the view of
+/// `cameraViewProjection`, as a light-space (lightView) xy box (z = 0): the part of each box the view can see
+/// under some other box (or a box that is not flat) reaching nearer the light. Boxes bound every surface and
+/// caster, so this is a superset of where visible shadows fall; empty when none can.
+Aabb shadowableRegion(const glm::vec3& direction, const glm::mat4& cameraViewProjection,
+                      std::span<const Aabb> boxes);
+
+/// @brief The rotation directional maps of a light shining along `direction` are drawn in: world → light
+/// space, the light looking down -z.
+glm::mat4 lightView(const glm::vec3& direction);
 
 /// @brief Faces of a point light's cube map.
 inline constexpr int kCubeFaces = 6;

@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace shadows {
@@ -20,6 +21,7 @@ struct ShadowMapArray;
 struct LightMapsBlock;
 class ShadowSamplers;
 class JitterTexture;
+class VisibleSamples;
 
 /// @brief Resource and frame counters of the shadow module.
 struct ShadowStats {
@@ -73,10 +75,12 @@ public:
     /// @brief The visibility code for forward.frag's `declarations` and `light_visibility` slots, and the
     /// debug views for `final_color`.
     [[nodiscard]] std::vector<engine::ShaderChunk> shaderChunks() const override;
-    /// @brief Fits a projection for each shadow-casting light to the receivers in view, allocates its map
-    /// (again after a settings change) and uploads the shadow uniform block.
+    /// @brief Applies a settings change: drops the resources it affects and picks the variants.
     void prepareFrame(const engine::FrameContext& frame) override;
-    /// @brief Draws the shadow maps (and filters moments for the moment techniques).
+    /// @brief Fits a projection for each shadow-casting light to the receivers in view (a directional light's
+    /// to the visible samples of a depth pass of the view, by default), allocates its map (again after a
+    /// settings change), uploads the shadow uniform block, then draws the shadow maps (and filters moments
+    /// for the moment techniques).
     void renderPrePasses(const engine::FrameContext& frame) override;
     /// @brief The technique's lighting variant while this frame has a shadow map, else 0.
     [[nodiscard]] engine::ShaderVariantKey variantBits(const engine::DrawContext& draw) const override;
@@ -92,6 +96,14 @@ private:
     };
 
     void releaseResources();
+    /// Fits every shadow-casting light's maps for `frame`, allocates them and uploads the block.
+    void fitMaps(const engine::FrameContext& frame);
+    /// Fits `light`'s maps to the visible samples (DirectionalFit::Samples) into `maps` and the slots; false,
+    /// having added nothing, when the view has no sample.
+    bool fitToVisibleSamples(const engine::FrameContext& frame, const engine::FrameLight& light,
+                             const FitView& fit, std::span<const Aabb> boxes, LightMapsBlock& maps);
+    /// The slot of a fitted map of light `lightIndex`, -1 when it has nothing to draw or every slot is taken.
+    int addSlot(int lightIndex, const LightProjection& projection);
     /// Blurs the moments (ShadowPlan::blursMoments).
     void blurMoments();
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
@@ -112,6 +124,8 @@ private:
     std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
     std::unique_ptr<engine::gl::Buffer> shadowBlock_;
     std::optional<FitView> fitView_;
+    std::unique_ptr<VisibleSamples> samples_; // directional maps fitted to samples only
+    bool warnedNoSamples_ = false;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds

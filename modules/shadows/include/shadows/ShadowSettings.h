@@ -28,6 +28,16 @@ enum class CasterFaces {
     Back,  ///< triangles facing away: the far side of closed meshes, which moves acne off lit surfaces
 };
 
+/// @brief What a directional light's maps are fitted to.
+enum class DirectionalFit {
+    /// The visible samples of a depth pass of the view (Sample Distribution Shadow Maps, Lauritzen et al.
+    /// 2011): the depth range, the cascades' count and each map's rectangle follow what the screen shows.
+    Samples,
+    /// Mesh bounds: where visible boxes can be shadowed (one map), or the bounding spheres of the view
+    /// frustum's slices (cascades).
+    Bounds,
+};
+
 /// @brief Form of the average-gradient computation for PcfGsmAverageGradient.
 enum class AverageGradientForm {
     LeastSquares,  ///< any pattern, precomputed inverse covariance
@@ -108,6 +118,8 @@ struct ShadowSettings {
     float normalOffsetTexels = 0.0f;
     /// Floors the receiver depth to the format's step before comparing.
     bool floorReceiverDepth = false;
+    /// What directional maps are fitted to: the visible depth samples, or mesh bounds.
+    DirectionalFit directionalFit = DirectionalFit::Samples;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
     /// Cascades of each directional light's map (1: one map over where visible receivers can be shadowed; 0:
@@ -164,6 +176,8 @@ template <>
 std::span<const EnumName<DepthFormat>> enumNames();
 template <>
 std::span<const EnumName<CasterFaces>> enumNames();
+template <>
+std::span<const EnumName<DirectionalFit>> enumNames();
 template <>
 std::span<const EnumName<AverageGradientForm>> enumNames();
 template <>
