@@ -218,7 +218,8 @@ const std::vector<SettingRow>& rows() {
          BoolSetting{&S::texelSnapping}, always},
         {"cascadeCount", "", "cascades",
          "Cascades of each directional light's shadow map. 1: one map over where visible receivers can be "
-         "shadowed. 2-4: the view depths of visible receivers (the samples' range, or the visible boxes') are "
+         "shadowed. 2-4: the view depths of visible receivers (the samples' range, or the visible boxes') "
+         "are "
          "split by the practical split scheme, each slice gets a map (around its samples, or around its "
          "bounding sphere), snapped to texels; a cascade no visible receiver falls in is not drawn. 0: "
          "automatic: fitted to samples, the fewest cascades whose texels are no larger than a pixel at each "
