@@ -95,10 +95,15 @@ done
 
 # 7. Defaults: every technique at its defaults on every content scene and real model, under the scene's own light
 #    and a sweep of azimuths x elevations down to 1° above the horizon; accuracy only (the Defaults table).
+#    The large outdoor views: the terrain seen from 10 m above its ground under its own sun, and the generated apron
+#    (one mesh per object, and all in one mesh) under suns at 40, 15, 8 and 3 degrees.
 views=(knob torus bowl thin-shell crease-cube grazing-plane spheres "${corpus[@]}")
-"$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") --out "$work/defaults-own"
+"$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") --scene terrain-low \
+    --out "$work/defaults-own"
 "$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") \
     --light-sweep 30,210:40,5,1 --out "$work/defaults-swept"
+"$bench" --defaults --accuracy-only --size 320x240 --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 \
+    --out "$work/defaults-large"
 
 # 8. Every light. The 4 km outdoor scene under its sun: the default technique with 1-4 cascades and several
 #    split weights, timed, against the truth, and its shimmer while the view the maps are fitted to moves by
@@ -120,6 +125,19 @@ cascades+=(--config "c4-w0.9-unsnapped:cascadeCount=4,cascadeSplitWeight=0.9,tex
 "$bench" --scene outdoor --techniques default --resolutions 2048 --frames 5 --shimmer 8 "${cascades[@]}" \
     --peer "$work/osg" --out "$work/outdoor-cascades"
 "$bench" --defaults --scene outdoor --scene room --frames 5 --out "$work/every-light"
+
+# 9. Fitted to what the screen sees: the maps fitted to the visible depth samples (the default) against mesh bounds,
+#    timed at 640x480 with 2048² maps, on the large views and two models; then shimmer along a camera path (the
+#    maps fitted to each frame's view), snapped, unsnapped and fitted to bounds.
+bounds=()
+for technique in evsm slope-scaled gsm pcf; do
+    bounds+=(--config "$technique-bounds:technique=$technique,directionalFit=bounds")
+done
+"$bench" --scene apron-merged --scene apron --scene terrain-low --scene terrain --scene knob --scene cylinder-engine \
+    --defaults --techniques evsm,slope-scaled,gsm,pcf "${bounds[@]}" --frames 3 --out "$work/fit"
+"$bench" --scene knob --scene outdoor --scene terrain --scene apron-merged --techniques default --resolutions 2048 \
+    --accuracy-only --size 320x240 --shimmer-path 16 --config "unsnapped:texelSnapping=false,resolution=2048" \
+    --config "bounds:directionalFit=bounds,resolution=2048" --out "$work/path-shimmer"
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results

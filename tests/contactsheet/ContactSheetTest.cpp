@@ -1,6 +1,6 @@
 // gs-contactsheet's layout and labels on synthetic images: tiles where the geometry says, labels drawn in the
-// label band under their tile and nowhere else, box downsampling, and clear errors for a missing or bogus
-// font.
+// label band under their tile and nowhere else, the labels' text (accuracy, frame time, edge p95) fitting the
+// demo's tiles, box downsampling, and clear errors for a missing or bogus font.
 #include <contactsheet/ContactSheet.h>
 
 #include <engine/Error.h>
@@ -103,6 +103,49 @@ TEST(ContactSheetTest, TilesAndLabelsSitWhereTheGeometrySays) {
     tiles[1].image = solid({41, 30}, colours[1]);
     EXPECT_THROW(contactsheet::composeSheet("t", tiles, font, layout), engine::Error);
     EXPECT_THROW(contactsheet::composeSheet("t", {}, font, layout), engine::Error);
+}
+
+TEST(ContactSheetTest, LabelsCarryAccuracyFrameTimeAndEdgesBothWays) {
+    const contactsheet::Scores scores{0.0004, 0.0791, 0.00383, 36.94, 8.26, 4.0};
+    EXPECT_EQ(contactsheet::shadedLabel("slope-scaled", scores),
+              (std::vector<std::string>{"slope-scaled", "acne 0.040 %  leak 7.91 %  darkening 0.38 %",
+                                        "frame 36.9 ms  edge p95 8.3 / 4.0 px"}));
+    EXPECT_EQ(contactsheet::errorLabel("slope-scaled", scores),
+              (std::vector<std::string>{"slope-scaled", "acne (red) 0.040 %  leak (blue) 7.91 %",
+                                        "frame 36.9 ms  edge p95 8.3 / 4.0 px"}));
+    // gs-shadowbench --accuracy-only writes -1 for its times.
+    contactsheet::Scores untimed = scores;
+    untimed.frameMs = -1.0;
+    EXPECT_EQ(contactsheet::shadedLabel("gsm", untimed).back(), "frame not timed  edge p95 8.3 / 4.0 px");
+}
+
+TEST(ContactSheetTest, SmallRatesKeepTwoSignificantDigits) {
+    // Two pixels of acne among 140 000 receivers is not the same as none, nor as twenty.
+    EXPECT_EQ(contactsheet::percent(2.0 / 140000.0), "0.0014 %");
+    EXPECT_EQ(contactsheet::percent(20.0 / 140000.0), "0.014 %");
+    EXPECT_EQ(contactsheet::percent(0.0), "0 %");
+    EXPECT_EQ(contactsheet::percent(1.0 / (640.0 * 480.0)), "0.0003 %"); // one pixel of the demo's view
+    EXPECT_EQ(contactsheet::percent(1e-7), "<0.0001 %");
+    EXPECT_EQ(contactsheet::percent(0.00383), "0.38 %");
+    EXPECT_EQ(contactsheet::percent(0.0999), "9.99 %");
+    EXPECT_EQ(contactsheet::percent(1.0), "100.00 %");
+}
+
+TEST(ContactSheetTest, WidestLabelsFitTheDemosTiles) {
+    // The demo's tiles: a 640x480 bench at --downsample 2, labels at the default 14 px.
+    const Font font(kDefaultFont, 14.0f);
+    // The longest numbers: whole rates, and one pixel among all 640x480 as receivers (0.0003 %).
+    const double onePixel = 1.0 / (640.0 * 480.0);
+    for (const contactsheet::Scores& worst :
+         {contactsheet::Scores{1.0, 1.0, 1.0, 9999.9, 800.0, 800.0},
+          contactsheet::Scores{onePixel, onePixel, onePixel, 9999.9, 800.0, 800.0}}) {
+        for (const auto& label : {contactsheet::shadedLabel("pcf-gsm-quadratic", worst),
+                                  contactsheet::errorLabel("pcf-gsm-quadratic", worst)}) {
+            for (const std::string& line : label) {
+                EXPECT_LE(font.textWidth(line), 320) << line;
+            }
+        }
+    }
 }
 
 TEST(ContactSheetTest, DownsampleAveragesBlocks) {

@@ -566,12 +566,57 @@ def every_light_section(cascades, every):
     out.append("\n".join(lines) + "\n")
 
 
+def fit_section(fit):
+    """The maps fitted to the visible samples (the default) against mesh bounds, per scene."""
+    out.append("## Fitted to what the screen sees\n")
+    out.append(f"Directional maps fitted to the visible depth samples (`directionalFit` `samples`, the default: rows "
+               f"named after the technique) and to mesh bounds (`-bounds` rows), at their defaults otherwise, "
+               f"{fit['width']}x{fit['height']}, {fit['results'][0]['settings']['resolution']}² maps, the automatic "
+               "cascade count of each fit; every scene under its own light (the apron's sun is 8° up). Band, floor and "
+               "texel density as in \"Defaults\"; times are whole frames, the shadow pass (the sample pass and its "
+               "reduction included for the samples fit) and the lighting pass, "
+               f"{fit['timingMethod']}.\n")
+    for scene in dict.fromkeys(r["scene"] for r in fit["results"]):
+        rows = [r for r in fit["results"] if r["scene"] == scene]
+        lines = [f"**{scene}**\n",
+                 "| configuration | maps | acne | leak | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 | "
+                 "meets the floor | shadow ms | lighting ms | frame ms | memory |",
+                 "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+        for r in rows:
+            lines.append(f"| {r['label']} | {r['shadowMaps']} | {100 * r['acneRate']:.3f} % | {100 * r['leakRate']:.3f} % | "
+                         f"{edges(r)} | {'yes' if meets_floor(r) else 'no'} | {r['shadowPassMs']['median']:.1f} | "
+                         f"{r['lightingPassMs']['median']:.1f} | {frame_ms(r):.1f} | {r['shadowBytes'] / 2**20:.0f} MiB |")
+        out.append("\n".join(lines) + "\n")
+
+
+def path_shimmer_section(path):
+    """Shimmer along a camera path: the default technique snapped, unsnapped and fitted to bounds."""
+    out.append("## Shimmer along a camera path\n")
+    out.append(f"The camera moves 4 % of the distance to what it looks at and turns 3° over {path['pathFrames']} frames, "
+               "the maps fitted to each frame's view; the fraction of receiver pixels (each compared with its "
+               "reprojection in the previous frame, on the same surface) whose visibility changes by more than 0.5 where "
+               "the ray-traced truth does not (docs/SHADOWS.md, \"How a view is scored\"). A map whose edges lie a texel "
+               "off the truth's scores above 0 even when it does not move: compare rows of one scene.\n")
+    lines = ["| scene | " + " | ".join(dict.fromkeys(r["label"] for r in path["results"])) + " |"]
+    labels = list(dict.fromkeys(r["label"] for r in path["results"]))
+    lines.append("| --- |" + " --- |" * len(labels))
+    for scene in dict.fromkeys(r["scene"] for r in path["results"]):
+        cells = []
+        for label in labels:
+            r = next((r for r in path["results"] if r["scene"] == scene and r["label"] == label), None)
+            cells.append(f"{100 * r['pathShimmer']:.3f} %" if r and r["pathShimmer"] >= 0 else "–")
+        lines.append(f"| {scene} | " + " | ".join(cells) + " |")
+    out.append("\n".join(lines) + "\n")
+
+
 model_sections = []
 real_meta = load("real")
-own, swept = load("defaults-own"), load("defaults-swept")
-defaults_section({**own, "results": own["results"] + swept["results"]}, real_meta)
+own, swept, large = load("defaults-own"), load("defaults-swept"), load("defaults-large")
+defaults_section({**own, "results": own["results"] + swept["results"] + large["results"]}, real_meta)
 pcf_over_gsm_section({**own, "results": own["results"] + swept["results"]})
 real_models(real_meta, load("scaling"))
 every_light_section(load("outdoor-cascades"), load("every-light"))
+fit_section(load("fit"))
+path_shimmer_section(load("path-shimmer"))
 
 results_md.write_text("\n".join(out) + "\n")

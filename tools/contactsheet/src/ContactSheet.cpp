@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -183,6 +184,55 @@ engine::Image composeSheet(const std::string& title, const std::vector<Tile>& ti
         }
     }
     return sheet;
+}
+
+std::string percent(double fraction) {
+    const double value = 100.0 * fraction;
+    if (value == 0.0) {
+        return "0 %";
+    }
+    // Two significant digits below 1 %, down to 0.0001 %: on a view every technique nearly meets, two pixels
+    // of acne must read apart from twenty, and from none. Four decimals at most keep the three rates within a
+    // 320-pixel tile (one pixel of 640x480 is 0.0003 %).
+    if (std::abs(value) < 0.00005) {
+        return "<0.0001 %";
+    }
+    const int decimals =
+        std::abs(value) >= 1.0
+            ? 2
+            : std::clamp(1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 2, 4);
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f %%", decimals, value);
+    return text;
+}
+
+namespace {
+
+/// The speed and edge-placement line both sheets share: what a technique costs beside how far its edges
+/// stray.
+std::string timeAndEdges(const Scores& scores) {
+    char frame[32] = "frame not timed";
+    if (scores.frameMs >= 0.0) {
+        std::snprintf(frame, sizeof frame, "frame %.1f ms", scores.frameMs);
+    }
+    char edges[64];
+    std::snprintf(edges, sizeof edges, "  edge p95 %.1f / %.1f px", scores.edgeTrueToDrawnP95,
+                  scores.edgeDrawnToTrueP95);
+    return std::string(frame) + edges;
+}
+
+} // namespace
+
+std::vector<std::string> shadedLabel(const std::string& name, const Scores& scores) {
+    return {name,
+            "acne " + percent(scores.acne) + "  leak " + percent(scores.leak) + "  darkening " +
+                percent(scores.darkening),
+            timeAndEdges(scores)};
+}
+
+std::vector<std::string> errorLabel(const std::string& name, const Scores& scores) {
+    return {name, "acne (red) " + percent(scores.acne) + "  leak (blue) " + percent(scores.leak),
+            timeAndEdges(scores)};
 }
 
 engine::Image downsample(const engine::Image& image, int factor) {

@@ -1,6 +1,7 @@
 // gs-contactsheet: labelled sheets of a gs-shadowbench run, for people comparing techniques by eye: every
-// configuration's shaded frame with its acne, leak and darkening against the ray-traced truth, and the
-// truth's classes beside every configuration's error classes.
+// configuration's shaded frame with its acne, leak and darkening against the ray-traced truth, its frame time
+// and how far its shadow edges stray (p95 both ways), and the truth's classes beside every configuration's
+// error classes.
 #include <contactsheet/ContactSheet.h>
 
 #include <cli/OptionValues.h>
@@ -9,7 +10,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -79,16 +79,8 @@ Options parse(int argc, char** argv) {
 struct Row {
     std::string label;
     std::string technique;
-    double acne = 0.0;
-    double leak = 0.0;
-    double darkening = 0.0;
+    contactsheet::Scores scores;
 };
-
-std::string percent(double fraction) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f %%", 100.0 * fraction);
-    return text;
-}
 
 nlohmann::json readJson(const std::filesystem::path& path) {
     std::ifstream file(path);
@@ -121,10 +113,14 @@ int main(int argc, char** argv) {
                 if (rowScene != scene) {
                     continue;
                 }
-                rows.push_back({result.at("label").get<std::string>(),
-                                result.at("settings").at("technique").get<std::string>(),
-                                result.at("acneRate").get<double>(), result.at("leakRate").get<double>(),
-                                result.at("darkening").get<double>()});
+                const nlohmann::json& edges = result.at("edges");
+                rows.push_back(
+                    {result.at("label").get<std::string>(),
+                     result.at("settings").at("technique").get<std::string>(),
+                     {result.at("acneRate").get<double>(), result.at("leakRate").get<double>(),
+                      result.at("darkening").get<double>(), result.at("frameMs").at("median").get<double>(),
+                      edges.at("trueToRendered").at("p95").get<double>(),
+                      edges.at("renderedToTrue").at("p95").get<double>()}});
             }
         } catch (const nlohmann::json::exception& error) {
             throw engine::Error(resultsPath.string() + ": " + error.what());
@@ -148,29 +144,31 @@ int main(int argc, char** argv) {
              {"ray-traced truth (Embree)", "white lit, grey shadowed, ochre edge band"}}};
         for (const Row& row : rows) {
             const std::string name = runsOfTechnique[row.technique] == 1 ? row.technique : row.label;
-            shaded.push_back({tileImage(row.label + ".png"),
-                              {name, "acne " + percent(row.acne) + "  leak " + percent(row.leak) +
-                                         "  darkening " + percent(row.darkening)}});
+            shaded.push_back({tileImage(row.label + ".png"), contactsheet::shadedLabel(name, row.scores)});
             errors.push_back(
-                {tileImage(row.label + "-classes.png"),
-                 {name, "acne (red) " + percent(row.acne) + "  leak (blue) " + percent(row.leak)}});
+                {tileImage(row.label + "-classes.png"), contactsheet::errorLabel(name, row.scores)});
         }
         contactsheet::SheetLayout layout;
         layout.columns = options.columns;
         const int width = results.value("width", 0);
         const int height = results.value("height", 0);
         const std::string size = std::to_string(width) + "x" + std::to_string(height);
+        // The labels' third line, explained once per sheet rather than under every tile.
+        const std::string timeAndEdges = "; frame = median whole frame; edge p95 = true edges to the nearest "
+                                         "drawn / drawn to the nearest true";
         const std::filesystem::path out = options.out.value_or(options.bench);
         engine::writePng(out / "contact-sheet.png",
                          contactsheet::composeSheet(scene + ", " + size +
                                                         ", against the ray-traced truth: acne = lit drawn "
                                                         "shadowed, leak = shadowed drawn lit, darkening = "
-                                                        "light lost where lit",
+                                                        "light lost where lit" +
+                                                        timeAndEdges,
                                                     shaded, font, layout));
         engine::writePng(out / "truth-sheet.png",
                          contactsheet::composeSheet(scene + ", " + size +
                                                         ": the truth's classes, then each technique's errors "
-                                                        "(red acne, blue leak)",
+                                                        "(red acne, blue leak)" +
+                                                        timeAndEdges,
                                                     errors, font, layout));
         std::cout << "wrote " << (out / "contact-sheet.png").string() << " and "
                   << (out / "truth-sheet.png").string() << " (" << rows.size() << " configurations of "

@@ -78,6 +78,28 @@ SheetGeometry sheetGeometry(std::size_t tileCount, glm::ivec2 tileSize, std::siz
 engine::Image composeSheet(const std::string& title, const std::vector<Tile>& tiles, const Font& font,
                            const SheetLayout& layout);
 
+/// @brief What the labels say of one configuration of a bench run, as its results.json row has it.
+struct Scores {
+    double acne = 0.0;      ///< fraction of lit receivers drawn shadowed
+    double leak = 0.0;      ///< fraction of shadowed receivers drawn lit
+    double darkening = 0.0; ///< mean visibility lost over lit receivers
+    double frameMs = -1.0;  ///< median whole frame; negative when the run was not timed
+    /// Pixels from a true shadow edge to the nearest drawn one, 95th percentile (edges missed or moved).
+    double edgeTrueToDrawnP95 = 0.0;
+    /// Pixels from a drawn shadow edge to the nearest true one, 95th percentile (edges that are not there).
+    double edgeDrawnToTrueP95 = 0.0;
+};
+
+/// @brief `fraction` as a percentage: two decimals from 1 % up ("12.50 %"), two significant digits below
+/// with four decimals at most ("0.38 %", "0.0014 %", "0.0003 %"), "<0.0001 %" below that, "0 %" for none.
+std::string percent(double fraction);
+/// @brief The label under a configuration's shaded frame: `name`; acne, leak and darkening; frame time and
+/// edge p95 both ways ("frame 12.3 ms  edge p95 1.0 / 4.1 px", or "frame not timed ...").
+std::vector<std::string> shadedLabel(const std::string& name, const Scores& scores);
+/// @brief The label under a configuration's error classes: `name`; acne (red) and leak (blue); the same frame
+/// time and edge line as shadedLabel.
+std::vector<std::string> errorLabel(const std::string& name, const Scores& scores);
+
 /// @brief `image` at 1/`factor` of its size (each pixel the mean of a factor × factor block; a partial block
 /// at the right or bottom edge is dropped). Throws engine::Error for a factor below 1 or above the size.
 engine::Image downsample(const engine::Image& image, int factor);
