@@ -204,6 +204,15 @@ std::optional<glm::vec2> depthSpanOver(const Aabb& box, const glm::mat4& view, g
     return span;
 }
 
+/// Quantises a square map's `extent` up to 1/8-octave steps, so it changes rarely, then its `centre` to whole
+/// texels of `resolution`, so its texel grid stays put in world space.
+void snapSquare(float& extent, glm::vec2& centre, int resolution) {
+    const float unit = std::exp2(std::floor(std::log2(extent)) - 3.0f);
+    extent = std::ceil(extent / unit) * unit;
+    const float texel = extent / static_cast<float>(resolution);
+    centre = glm::floor(centre / texel) * texel;
+}
+
 /// The corners of a projection's view volume in view space, and its near and far view depths.
 struct FrustumCorners {
     std::array<glm::vec3, 4> nearPoints{};
@@ -301,11 +310,7 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
     float extent = std::max(high.x - low.x, high.y - low.y);
     glm::vec2 centre = 0.5f * (low + high);
     if (snapToTexels) {
-        // Quantise the extent to 1/8-octave steps so it changes rarely, then the origin to whole texels.
-        const float unit = std::exp2(std::floor(std::log2(extent)) - 3.0f);
-        extent = std::ceil(extent / unit) * unit;
-        const float texel = extent / static_cast<float>(resolution);
-        centre = glm::floor(centre / texel) * texel;
+        snapSquare(extent, centre, resolution);
     }
     const glm::vec2 half(0.5f * extent);
     // Depth: the parts of the boxes over the map, towards the light and beyond the receivers. Only
@@ -358,10 +363,7 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
                    std::max(static_cast<float>(resolution) - 2.0f * slack, 1.0f);
     glm::vec2 centre = 0.5f * (glm::vec2(samples.min) + glm::vec2(samples.max));
     if (snapToTexels) {
-        const float unit = std::exp2(std::floor(std::log2(extent)) - 3.0f);
-        extent = std::ceil(extent / unit) * unit;
-        const float texel = extent / static_cast<float>(resolution);
-        centre = glm::floor(centre / texel) * texel;
+        snapSquare(extent, centre, resolution);
     }
     const glm::vec2 half(0.5f * extent);
     float nearest = samples.max.z; // towards the light

@@ -17,9 +17,19 @@ glm::vec4 texelClip(int x, int y, glm::ivec2 size, float depth) {
             1.0f};
 }
 
-/// Whether window depth `depth` holds a surface: below the far plane's 1 (cleared), and a number.
-bool holdsSurface(float depth) {
-    return depth < 1.0f && depth >= 0.0f;
+/// Calls `visit(clip)` with the clip-space position of every texel of `depth` that holds a surface: below the
+/// far plane's 1 (cleared), and a number.
+template <typename Visit>
+void forEachSample(std::span<const float> depth, glm::ivec2 size, const Visit& visit) {
+    for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < size.x; ++x) {
+            const float d = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) +
+                                  static_cast<std::size_t>(x)];
+            if (d < 1.0f && d >= 0.0f) {
+                visit(texelClip(x, y, size, d));
+            }
+        }
+    }
 }
 
 } // namespace
@@ -57,18 +67,11 @@ std::array<glm::vec2, kSampleSlices> sampleSliceDepths(glm::vec2 range, float we
 std::optional<glm::vec2> sampleDepthRange(std::span<const float> depth, glm::ivec2 size,
                                           const glm::mat4& clipToView) {
     glm::vec2 range(std::numeric_limits<float>::max(), -std::numeric_limits<float>::max());
-    for (int y = 0; y < size.y; ++y) {
-        for (int x = 0; x < size.x; ++x) {
-            const float d = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) +
-                                  static_cast<std::size_t>(x)];
-            if (!holdsSurface(d)) {
-                continue;
-            }
-            const glm::vec4 view = clipToView * texelClip(x, y, size, d);
-            const float viewDepth = -view.z / view.w;
-            range = {std::min(range.x, viewDepth), std::max(range.y, viewDepth)};
-        }
-    }
+    forEachSample(depth, size, [&](const glm::vec4& clip) {
+        const glm::vec4 view = clipToView * clip;
+        const float viewDepth = -view.z / view.w;
+        range = {std::min(range.x, viewDepth), std::max(range.y, viewDepth)};
+    });
     if (!(range.x <= range.y) || !std::isfinite(range.x) || !std::isfinite(range.y) || !(range.x > 0.0f)) {
         return std::nullopt;
     }
@@ -80,24 +83,17 @@ sampleLightRects(std::span<const float> depth, glm::ivec2 size, const glm::mat4&
                  const glm::mat4& worldToView, const glm::mat4& worldToLight,
                  const std::array<glm::vec2, kSampleSlices>& sliceDepths) {
     std::array<LightRect, kSampleSlices> rects{};
-    for (int y = 0; y < size.y; ++y) {
-        for (int x = 0; x < size.x; ++x) {
-            const float d = depth[static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) +
-                                  static_cast<std::size_t>(x)];
-            if (!holdsSurface(d)) {
-                continue;
-            }
-            const glm::vec4 world = clipToWorld * texelClip(x, y, size, d);
-            const glm::vec4 point(glm::vec3(world) / world.w, 1.0f);
-            const float viewDepth = -(worldToView * point).z;
-            const glm::vec3 light(worldToLight * point);
-            for (std::size_t s = 0; s < rects.size(); ++s) {
-                if (viewDepth >= sliceDepths[s].x && viewDepth <= sliceDepths[s].y) {
-                    rects[s].extend(light);
-                }
+    forEachSample(depth, size, [&](const glm::vec4& clip) {
+        const glm::vec4 world = clipToWorld * clip;
+        const glm::vec4 point(glm::vec3(world) / world.w, 1.0f);
+        const float viewDepth = -(worldToView * point).z;
+        const glm::vec3 light(worldToLight * point);
+        for (std::size_t s = 0; s < rects.size(); ++s) {
+            if (viewDepth >= sliceDepths[s].x && viewDepth <= sliceDepths[s].y) {
+                rects[s].extend(light);
             }
         }
-    }
+    });
     return rects;
 }
 
