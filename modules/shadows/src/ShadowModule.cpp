@@ -39,6 +39,13 @@ std::string techniqueIncludes() {
     return includes;
 }
 
+/// `drawn` when any slot of `maps` holds a map this frame, else None (the lighting pass reads nothing).
+std::int32_t drawnKind(const LightMapsBlock& maps, LightMapsKind drawn) {
+    const bool any = glm::any(glm::greaterThanEqual(maps.slots, glm::ivec4(0))) ||
+                     glm::any(glm::greaterThanEqual(maps.faceSlots, glm::ivec4(0)));
+    return static_cast<std::int32_t>(any ? drawn : LightMapsKind::None);
+}
+
 } // namespace
 
 ShadowModule::ShadowModule() : ShadowModule(ShadowSettings{}) {}
@@ -181,11 +188,9 @@ bool ShadowModule::fitToVisibleSamples(const engine::FrameContext& frame, const 
     };
     if (count == 1) {
         maps.slots.x = addSlot(light.index, fitted(0));
-        maps.kind.x =
-            static_cast<std::int32_t>(maps.slots.x >= 0 ? LightMapsKind::Single : LightMapsKind::None);
+        maps.kind.x = drawnKind(maps, LightMapsKind::Single);
         return true;
     }
-    bool any = false;
     for (int cascade = 0; cascade < count; ++cascade) {
         const auto slice = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
         // The split itself, not the slice, which starts earlier by the previous cascade's blend band.
@@ -193,11 +198,9 @@ bool ShadowModule::fitToVisibleSamples(const engine::FrameContext& frame, const 
         maps.splitFar[cascade] = bounds->sliceDepths[slice].y;
         if (!slices[slice].empty()) {
             maps.slots[cascade] = addSlot(light.index, fitted(cascade));
-            any = any || maps.slots[cascade] >= 0;
         }
     }
-    maps.kind = glm::ivec4(static_cast<std::int32_t>(any ? LightMapsKind::Cascades : LightMapsKind::None),
-                           count, 0, 0);
+    maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::Cascades), count, 0, 0);
     return true;
 }
 
@@ -232,11 +235,7 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
         }
         // The slot of a fitted map, -1 when it has nothing to draw or every slot is taken.
         const auto add = [&](const LightProjection& projection) { return addSlot(light.index, projection); };
-        const auto kind = [&](LightMapsKind drawn) {
-            const bool any = glm::any(glm::greaterThanEqual(maps.slots, glm::ivec4(0))) ||
-                             glm::any(glm::greaterThanEqual(maps.faceSlots, glm::ivec4(0)));
-            return static_cast<std::int32_t>(any ? drawn : LightMapsKind::None);
-        };
+        const auto kind = [&](LightMapsKind drawn) { return drawnKind(maps, drawn); };
         switch (light.light.type) {
         case engine::LightType::Directional: {
             if (settings_.directionalFit == DirectionalFit::Samples &&
