@@ -14,6 +14,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <array>
 #include <iostream>
 #include <span>
 #include <stdexcept>
@@ -296,7 +297,26 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
     if (!maps_ || maps_->layers() != static_cast<int>(slots_.size())) {
         maps_ = std::make_unique<ShadowMapArray>(resolution, static_cast<int>(slots_.size()), plan_);
     }
+    layoutKey_ = layoutKey(lights);
     uploadBlock(lights, fit);
+}
+
+engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBlock>& lights) const {
+    // llvmpipe runs both sides of every branch under a mask, so a layout compiled in costs its lookups on
+    // every fragment whether a light uses it or not; only this frame's layouts are compiled.
+    constexpr std::array<std::string_view, 4> kDefines{"", "GS_SHADOW_LAYOUT_SINGLE",
+                                                       "GS_SHADOW_LAYOUT_CASCADES", "GS_SHADOW_LAYOUT_CUBE"};
+    engine::ShaderVariantKey key = 0;
+    for (const LightMapsBlock& maps : lights) {
+        if (maps.kind.x > 0) {
+            key |= host_->variantFlag(kDefines[static_cast<std::size_t>(maps.kind.x)]);
+        }
+    }
+    // One map in all: its slot is 0, and the lookups index the block's arrays by a constant.
+    if (slots_.size() == 1) {
+        key |= host_->variantFlag("GS_SHADOW_ONE_MAP");
+    }
+    return key;
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
@@ -377,7 +397,7 @@ void ShadowModule::blurMoments() {
 }
 
 engine::ShaderVariantKey ShadowModule::variantBits(const engine::DrawContext&) const {
-    return slots_.empty() ? 0 : lightingKey_;
+    return slots_.empty() ? 0 : lightingKey_ | layoutKey_;
 }
 
 void ShadowModule::bindLightingResources(const engine::gl::Program& program, const engine::DrawContext&) {

@@ -109,6 +109,9 @@ private:
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
     void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit);
     [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;
+    /// The variant bits of the map layouts (LightMapsKind) `lights` use, which the lighting pass compiles
+    /// alone, and GS_SHADOW_ONE_MAP where the frame has one map.
+    [[nodiscard]] engine::ShaderVariantKey layoutKey(const std::vector<LightMapsBlock>& lights) const;
 
     ShadowSettings settings_;
     ShadowPlan plan_;
@@ -128,6 +131,7 @@ private:
     bool warnedNoSamples_ = false;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;
+    engine::ShaderVariantKey layoutKey_ = 0;        // this frame's map layouts
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds
     std::uint64_t frameIndex_ = 0;
     bool dirty_ = true;

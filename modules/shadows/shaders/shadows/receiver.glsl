@@ -8,6 +8,15 @@
 
 #include "block.glsl"
 
+// Whether a debug view replaces the shaded colour.
+#if defined(GS_SHADOW_DEBUG_TEXELS) || defined(GS_SHADOW_DEBUG_GRADIENT) || defined(GS_SHADOW_DEBUG_BIAS)
+#define GS_SHADOW_DEBUG_VIEW
+#elif defined(GS_SHADOW_DEBUG_VISIBILITY) || defined(GS_SHADOW_DEBUG_MAP) || defined(GS_SHADOW_DEBUG_KERNEL)
+#define GS_SHADOW_DEBUG_VIEW
+#elif defined(GS_SHADOW_DEBUG_MAPS) || defined(GS_SHADOW_DEBUG_DENSITY)
+#define GS_SHADOW_DEBUG_VIEW
+#endif
+
 // Every map of the frame is a layer (its slot) of one array: a fragment may pick its cascade or cube face
 // itself, which a sampler array would not allow (its index must be uniform).
 #ifdef GS_SHADOW_SAMPLER_COMPARE
@@ -238,33 +247,56 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     // Screen derivatives must be taken before any per-pixel branch (a quad's fragments may pick other maps).
     vec3 dPdx = dFdxFine(worldPosition);
     vec3 dPdy = dFdyFine(worldPosition);
+#if !defined(GS_SHADOW_DEBUG_VIEW) && !defined(GS_SHADOW_KEEP_FACING_AWAY)
+    // A receiver facing away from the light gets none of it whatever the map says (gsBlinnPhong's Lambert and
+    // specular terms are 0 for this normal): no fetch. Debug views show the map's answer there too;
+    // GS_SHADOW_KEEP_FACING_AWAY exists for the test that shows this changes no image.
+    if (dot(normal, toLight) <= 0.0) {
+        return 1.0;
+    }
+#endif
     GsShadowFragment fragment =
         GsShadowFragment(worldPosition, gsFacetNormal(dPdx, dPdy, normal), toLight, dPdx, dPdy);
     GsShadowLightMaps maps = gsShadowLights[lightIndex];
     int kind = maps.kind.x;
+    // Each layout only where a light of this frame uses it (GS_SHADOW_LAYOUT_*, ShadowModule::layoutKey).
+#ifdef GS_SHADOW_LAYOUT_CUBE
     if (kind == GS_SHADOW_LIGHT_CUBE) {
         int face = gsCubeFace(worldPosition - gsLights[lightIndex].position.xyz);
         gsDebugMap = gsDebugMap < 0 ? face : gsDebugMap;
         return gsShadowMapVisibility(face < 4 ? maps.slots[face] : maps.faceSlots[face - 4], fragment);
     }
+#endif
+#ifdef GS_SHADOW_LAYOUT_CASCADES
     if (kind == GS_SHADOW_LIGHT_CASCADES) {
         float depth = dot(gsShadowViewDepth, vec4(worldPosition, 1.0));
         int count = maps.kind.y;
         int cascade = gsCascadeIndex(depth, maps.splitFar, count);
         gsDebugMap = gsDebugMap < 0 ? cascade : gsDebugMap;
-        float visibility = gsShadowMapVisibility(maps.slots[cascade], fragment);
-        if (cascade + 1 < count) {
-            float weight = gsCascadeBlendWeight(depth, maps.splitNear[cascade], maps.splitFar[cascade],
-                                                gsShadowCascadeBlend);
-            if (weight > 0.0) {
-                visibility = mix(visibility, gsShadowMapVisibility(maps.slots[cascade + 1], fragment), weight);
-            }
+        float weight = cascade + 1 < count ? gsCascadeBlendWeight(depth, maps.splitNear[cascade],
+                                                                    maps.splitFar[cascade], gsShadowCascadeBlend)
+                                           : 0.0;
+        // The next cascade fades in over the blend band. One lookup written once, in a loop of one or two
+        // iterations rather than two inlined lookups: llvmpipe runs a branch's code for every fragment, but
+        // leaves a loop once no fragment of its group continues, so only groups in a band pay twice.
+        float visibility = 0.0;
+        int last = weight > 0.0 ? cascade + 1 : cascade;
+        for (int c = cascade; c <= last; ++c) {
+            visibility += (c == cascade ? 1.0 - weight : weight) * gsShadowMapVisibility(maps.slots[c], fragment);
         }
         return visibility;
     }
+#endif
+#ifdef GS_SHADOW_LAYOUT_SINGLE
     if (kind == GS_SHADOW_LIGHT_SINGLE) {
+#ifdef GS_SHADOW_ONE_MAP
+        // The frame's only map is slot 0 (ShadowModule::layoutKey): a constant index into the block's arrays.
+        return gsShadowMapVisibility(0, fragment);
+#else
         return gsShadowMapVisibility(maps.slots.x, fragment);
+#endif
     }
+#endif
     return 1.0;
 }
 
