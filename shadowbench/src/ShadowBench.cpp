@@ -1,3 +1,4 @@
+#include <shadowbench/FetchProbe.h>
 #include <shadowbench/PeerRun.h>
 #include <shadowbench/ShadowBench.h>
 
@@ -6,6 +7,7 @@
 #include <engine/Image.h>
 #include <engine/RenderTarget.h>
 #include <shadows/ShadowModule.h>
+#include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettingsJson.h>
 #include <shadows/VisibilityMath.h>
 
@@ -15,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace shadowbench {
@@ -349,7 +352,75 @@ SceneCost ShadowBench::measureCost(const BenchScene& scene) const {
     cost.unshadowedFrame = options_.timing
                                ? timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames)
                                : PassTiming{-1.0, -1.0, -1.0};
+    if (options_.timing && options_.costModel) {
+        measureFetchCost(scene, cost);
+    }
     return cost;
+}
+
+void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) const {
+    engine::RenderTarget target(options_.size);
+    // The probe reads where the default technique's first map would: the same texels per pixel.
+    glm::mat4 worldToMap(1.0f);
+    {
+        engine::Engine engine;
+        auto& module =
+            static_cast<shadows::ShadowModule&>(engine.addModule(std::make_unique<shadows::ShadowModule>()));
+        engine.renderFrame(scene.scene_, scene.camera_, target);
+        if (const auto projection = module.lightProjection(scene.light_.index)) {
+            worldToMap = projection->worldToShadow;
+        }
+    }
+    const auto lightingPass = [&](engine::Engine& engine) {
+        engine.setPassTiming(method_);
+        engine.renderFrame(scene.scene_, scene.camera_, target);
+        std::vector<double> times;
+        for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
+            times.push_back(engine.renderFrame(scene.scene_, scene.camera_, target).lightingMilliseconds);
+        }
+        engine.setPassTiming(std::nullopt);
+        return summarise(times);
+    };
+    engine::Engine unshadowed;
+    engine::Engine filtered;
+    engine::Engine compare;
+    auto& filteredProbe = static_cast<FetchProbe&>(
+        filtered.addModule(std::make_unique<FetchProbe>(FetchKind::Filtered, 1, worldToMap)));
+    auto& compareProbe = static_cast<FetchProbe&>(
+        compare.addModule(std::make_unique<FetchProbe>(FetchKind::Compare, 1, worldToMap)));
+    // Rounds alternate every configuration, so a drift of the machine's speed spreads over all of them; each
+    // count's figure is its median over the rounds.
+    constexpr int kRounds = 3;
+    std::vector<double> base;
+    std::map<int, std::vector<double>> filteredTimes;
+    std::map<int, std::vector<double>> compareTimes;
+    for (int round = 0; round < kRounds; ++round) {
+        base.push_back(lightingPass(unshadowed).median);
+        for (const int fetches : FetchProbe::kCounts) {
+            filteredProbe.setFetches(fetches);
+            filteredTimes[fetches].push_back(lightingPass(filtered).median);
+            compareProbe.setFetches(fetches);
+            compareTimes[fetches].push_back(lightingPass(compare).median);
+        }
+    }
+    cost.unshadowedLighting = summarise(base);
+    // Least squares over the counts: the slope is one fetch's cost, the intercept the probe's fixed code.
+    const auto slope = [](const std::map<int, std::vector<double>>& times) {
+        double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+        for (const auto& [fetches, samples] : times) {
+            const double x = fetches;
+            const double y = summarise(samples).median;
+            n += 1.0;
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+        }
+        const double denominator = n * sxx - sx * sx;
+        return denominator > 0.0 ? (n * sxy - sx * sy) / denominator : -1.0;
+    };
+    cost.filteredFetchMs = slope(filteredTimes);
+    cost.compareFetchMs = slope(compareTimes);
 }
 
 BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
@@ -377,6 +448,22 @@ BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
     engine::writePng(folder / (result.config.label + "-error.png"),
                      errorHeatMap(options_.size, accuracy.classes, accuracy.truth, accuracy.visibility));
     return result;
+}
+
+int mapReadsPerLookup(const shadows::ShadowSettings& settings) {
+    const shadows::ShadowPlan plan = shadows::ShadowPlan::resolve(settings);
+    int reads = 1;
+    if (plan.traits->jittered) {
+        reads = settings.jitterTaps;
+    } else if (plan.usesTapPattern) {
+        reads = static_cast<int>(settings.tapPattern().offsets.size());
+    }
+    if (plan.readsPointGradient) {
+        reads += settings.gradientSource == shadows::GradientSource::StoredDerivatives    ? 1
+                 : settings.gradientSource == shadows::GradientSource::CentralDifferences ? 4
+                                                                                          : 0;
+    }
+    return reads;
 }
 
 std::string_view toString(BandUnit unit) {
@@ -510,6 +597,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["shimmerFrames"] = options.shimmerFrames;
     document["pathFrames"] = options.pathFrames;
     document["groundTruth"] = options.softSamplesPerAxis > 0 ? "soft" : "hard";
+    document["defaultTechnique"] = std::string(shadows::toString(shadows::ShadowSettings{}.technique));
     nlohmann::json list = nlohmann::json::array();
     for (const BenchResult& r : results) {
         const ShadowMetrics& m = r.metrics;
@@ -554,6 +642,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"naive", r.peerClass.empty() && shadows::traitsOf(r.config.settings.technique).naive},
              {"peerUnlitReceivers", r.peerUnlitReceivers},
              {"shadowBytes", r.shadowBytes},
+             {"mapReads", mapReadsPerLookup(r.config.settings)},
              {"fullKernelFraction", r.fullKernelFraction},
              {"shimmer", r.shimmer},
              {"pathShimmer", r.pathShimmer},
@@ -573,6 +662,14 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
               {{"median", c.unshadowedFrame.median},
                {"min", c.unshadowedFrame.min},
                {"max", c.unshadowedFrame.max}}},
+             {"unshadowedLightingMs", c.unshadowedLighting.median < 0.0
+                                          ? nlohmann::json()
+                                          : nlohmann::json({{"median", c.unshadowedLighting.median},
+                                                            {"min", c.unshadowedLighting.min},
+                                                            {"max", c.unshadowedLighting.max}})},
+             {"filteredFetchMs",
+              c.filteredFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.filteredFetchMs)},
+             {"compareFetchMs", c.compareFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.compareFetchMs)},
              {"peerUnshadowedFrameMs", c.peerUnshadowedFrame.median < 0.0
                                            ? nlohmann::json()
                                            : nlohmann::json({{"median", c.peerUnshadowedFrame.median},

@@ -35,6 +35,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --size WxH            image size                                          [640x480]
   --frames N            timed frames per configuration                      [5]
   --accuracy-only       measure accuracy only, no timing (times are -1)
+  --cost-model          also measure, per scene, the unshadowed lighting pass and one fetch's cost in it
+                        (a reference pass making 1-16 bilinear or comparison reads per fragment), to
+                        express each technique's lighting overhead in fetch-equivalents
   --shimmer N           also measure shimmer: the maps' fit moves a third of a texel per frame for N
                         frames while the camera stays; the fraction of receiver pixels whose visibility
                         changes by more than 0.5 between frames (0 for snapped cascades)
@@ -179,6 +182,8 @@ Options parse(int argc, char** argv) {
             options.defaults = true;
         } else if (arg == "--accuracy-only") {
             options.bench.timing = false;
+        } else if (arg == "--cost-model") {
+            options.bench.costModel = true;
         } else if (arg == "--light-sweep") {
             options.lights = lightSweep(value());
         } else if (arg == "--band") {
@@ -211,6 +216,9 @@ Options parse(int argc, char** argv) {
     }
     if (options.scenes.empty()) {
         options.scenes.push_back("knob");
+    }
+    if (options.bench.costModel && !options.bench.timing) {
+        usageError("--cost-model times the lighting pass: it cannot go with --accuracy-only");
     }
     return options;
 }
@@ -376,8 +384,14 @@ int main(int argc, char** argv) {
                               << "\n";
                 }
             }
-            std::cout << scene->name() << ": " << cost.triangles << " triangles, " << cost.drawCalls
-                      << " draws, unshadowed frame " << cost.unshadowedFrame.median << " ms\n";
+            std::cout << std::fixed << std::setprecision(2) << scene->name() << ": " << cost.triangles
+                      << " triangles, " << cost.drawCalls << " draws, unshadowed frame "
+                      << cost.unshadowedFrame.median << " ms";
+            if (cost.filteredFetchMs >= 0.0) {
+                std::cout << ", lighting pass " << cost.unshadowedLighting.median << " ms, one fetch "
+                          << cost.filteredFetchMs << " ms bilinear, " << cost.compareFetchMs << " ms compare";
+            }
+            std::cout << std::defaultfloat << "\n";
             costs.push_back(cost);
             engine::writePng(options.bench.imageFolder / scene->name() / "side-by-side.png",
                              sideBySide(shaded));

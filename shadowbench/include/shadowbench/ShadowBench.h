@@ -82,6 +82,12 @@ struct SceneCost {
     /// The OpenSceneGraph peer's unshadowed frame (from its vdsm run), when it ran; negative medians
     /// otherwise.
     PassTiming peerUnshadowedFrame{-1.0, -1.0, -1.0};
+    /// The cost model (BenchOptions::costModel; negative when not measured): the unshadowed lighting pass,
+    /// and the lighting-pass milliseconds one more fetch per fragment adds (FetchProbe), bilinear and
+    /// comparison.
+    PassTiming unshadowedLighting{-1.0, -1.0, -1.0};
+    double filteredFetchMs = -1.0;
+    double compareFetchMs = -1.0;
 };
 
 /// @brief One technique's visibility against ground truth over one view.
@@ -127,6 +133,8 @@ struct BenchOptions {
     /// Frames of the camera path of the path shimmer measurement (measurePathShimmer); 0 does not measure it.
     /// Default 0.
     int pathFrames = 0;
+    /// Whether measureCost also measures the cost model (SceneCost::filteredFetchMs). Default false.
+    bool costModel = false;
     /// Folder for the images (classification, error heat map, shaded). Default "bench".
     std::filesystem::path imageFolder = "bench";
 };
@@ -221,7 +229,8 @@ public:
     [[nodiscard]] double measurePathShimmer(const BenchScene& scene,
                                             const shadows::ShadowSettings& settings) const;
 
-    /// @brief The scene drawn without shadows: counts and whole-frame times.
+    /// @brief The scene drawn without shadows: counts and whole-frame times, and the cost model where
+    /// BenchOptions::costModel asks for it.
     [[nodiscard]] SceneCost measureCost(const BenchScene& scene) const;
 
     /// @brief A row for an OpenSceneGraph peer run: its accuracy against this scene's truth and its frame
@@ -236,6 +245,8 @@ private:
     /// Pass and whole-frame times of `engine`, already warmed up on `scene`.
     void time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
               BenchResult& result) const;
+    /// The cost model's figures of SceneCost: the unshadowed lighting pass and one fetch's cost.
+    void measureFetchCost(const BenchScene& scene, SceneCost& cost) const;
 
     BenchOptions options_;
     engine::TimingMethod method_;
@@ -248,6 +259,11 @@ private:
 std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
                                    std::span<const Surface> surfaces,
                                    std::span<const shadows::LightProjection> maps, int resolution);
+
+/// @brief Texture reads of the shadow maps per lookup with `settings`: the kernel's taps (jittered: every
+/// tap, the most an early out leaves), plus the reads of the point gradient (stored: 1; central differences:
+/// 4).
+[[nodiscard]] int mapReadsPerLookup(const shadows::ShadowSettings& settings);
 
 /// @brief Settings from a `key=value,key=value` list of ShadowSettings JSON fields (values: true/false,
 /// numbers, or names), starting from defaults. Throws shadows::SettingsError naming the field.
