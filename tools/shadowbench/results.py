@@ -13,6 +13,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from default_rule import EDGE_FLOOR, FLOOR, MEMORY_BUDGET_MIB, MIN_EDGE_PIXELS, MIN_PIXELS  # noqa: E402
+from default_rule import map_mib, meets_floor, recommend, scored  # noqa: E402
+import cost_model  # noqa: E402
+
 work, results_md, plot_folder = (pathlib.Path(a) for a in sys.argv[1:4])
 plot_folder.mkdir(parents=True, exist_ok=True)
 
@@ -340,36 +344,6 @@ def engine_options():
     out.append("\n".join(rows) + "\n")
 
 
-# The issue's floor for every non-naive technique at its defaults, and the fewest pixels a rate is scored over
-# (under a light 1° above the horizon a view may see only a handful of receivers).
-FLOOR = {"acneRate": 5e-4, "leakRate": 5e-4, "darkening": 5e-3}
-MIN_PIXELS = 1000
-# Edge distances count only where the truth has at least this many edge pixels: a view with a handful of true edge
-# pixels and no rendered edge would otherwise weigh in at the image diagonal.
-MIN_EDGE_PIXELS = 100
-# The floor's edge placement, both ways (true→rendered, rendered→true), in screen pixels.
-EDGE_FLOOR = {"mean": 0.5, "p95": 2.0}
-
-
-def scored(r):
-    """The metrics of a row that have enough pixels behind them, as {key: value}."""
-    counts = {"acneRate": r["pixels"]["lit"], "leakRate": r["pixels"]["shadowed"], "darkening": r["pixels"]["lit"]}
-    return {k: r[k] for k in FLOOR if counts[k] >= MIN_PIXELS}
-
-
-def edges_scored(r):
-    return r["edges"]["trueToRendered"]["pixels"] >= MIN_EDGE_PIXELS
-
-
-def edges_meet_floor(r):
-    return not edges_scored(r) or all(r["edges"][d][k] <= EDGE_FLOOR[k]
-                                      for d in ("trueToRendered", "renderedToTrue") for k in EDGE_FLOOR)
-
-
-def meets_floor(r):
-    return all(v < FLOOR[k] for k, v in scored(r).items()) and edges_meet_floor(r)
-
-
 def density_cells(mine):
     """Texel density over rows: mean fraction of lit receivers at m <= 1, the worst row's, and the worst p99."""
     known = [r["density"] for r in mine if r.get("density")]
@@ -422,9 +396,8 @@ def defaults_section(views, real):
                "`docs/results/defaults.csv`.\n")
     table = ["| technique | views meeting the floor | worst acne | worst leak | worst darkening | true→rendered edge: "
              "mean / worst p95 | rendered→true edge: mean / worst p95 | m ≤ 1: mean | m ≤ 1: worst | worst m p99 | "
-             "corpus frame ms (median) |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    scores = []
+             "corpus frame ms (median) | memory per 2048² map |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for technique in techniques:
         mine = [r for r in rows if r["settings"]["technique"] == technique]
         naive = mine[0]["naive"]
@@ -440,14 +413,12 @@ def defaults_section(views, real):
 
         met = sum(meets_floor(r) for r in mine)
         ms = sorted(corpus_ms.get(technique, [0.0]))[len(corpus_ms.get(technique, [0.0])) // 2]
-        error = sum(sum(scored(r).values()) for r in mine) / len(mine)
-        if not naive and ms > 0:
-            scores.append((error * ms, technique, error, ms))
+        mib = max((map_mib(r) for r in mine if r["shadowMaps"] > 0), default=0.0)
         table.append(f"| `{technique}`{' (naive)' if naive else ''} | {met} / {len(mine)} | {100 * worst('acneRate'):.3f} % | "
                      f"{100 * worst('leakRate'):.3f} % | {100 * worst('darkening'):.3f} % | "
                      f"{edge('trueToRendered', 'mean'):.2f} / {edge('trueToRendered', 'p95'):.1f} | "
                      f"{edge('renderedToTrue', 'mean'):.2f} / {edge('renderedToTrue', 'p95'):.1f} | "
-                     f"{density_cells(mine)} | {ms:.1f} |")
+                     f"{density_cells(mine)} | {ms:.1f} | {mib:.0f} MiB |")
     out.append("\n".join(table) + "\n")
     matrix = ["| technique | " + " | ".join(scenes) + " |", "| --- |" + " --- |" * len(scenes)]
     for technique in techniques:
@@ -458,13 +429,13 @@ def defaults_section(views, real):
         matrix.append(f"| `{technique}` | " + " | ".join(cells) + " |")
     out.append("Views meeting the floor, per scene (its own light and the sweep's):\n")
     out.append("\n".join(matrix) + "\n")
-    scores.sort()
-    best = scores[0]
-    out.append(f"**Recommended default: `{best[1]}`**, the lowest (mean over views of acne + leak + darkening) x "
-               f"(median frame on the real corpus, section Real models): {best[2]:.2e} x {best[3]:.1f} ms = "
-               f"{best[0]:.2e}. Next: "
-               + ", ".join(f"`{t}` {e:.2e} x {m:.1f} ms = {p:.2e}" for p, t, e, m in scores[1:4]) + ". "
-               "`ShadowSettings::technique` defaults to it.\n")
+    technique, line = recommend(rows, real["results"])
+    configured = views.get("defaultTechnique")
+    if configured == technique:
+        line += "`ShadowSettings::technique` defaults to it."
+    elif configured:
+        line += f"`ShadowSettings::technique` is `{configured}`: the rule and the default differ."
+    out.append(line + f" (The rule: tools/shadowbench/default_rule.py, memory budget {MEMORY_BUDGET_MIB:g} MiB.)\n")
 
 
 CONTENT_SCENES = {"knob", "torus", "bowl", "thin-shell", "crease-cube", "grazing-plane", "spheres"}
@@ -618,5 +589,8 @@ real_models(real_meta, load("scaling"))
 every_light_section(load("outdoor-cascades"), load("every-light"))
 fit_section(load("fit"))
 path_shimmer_section(load("path-shimmer"))
+if (work / "cost-model" / "results.json").exists():
+    nir_path = work / "cost-model" / "nir-counts.json"
+    out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))
 
 results_md.write_text("\n".join(out) + "\n")
