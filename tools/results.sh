@@ -139,6 +139,13 @@ done
     --accuracy-only --size 320x240 --shimmer-path 16 --config "unsnapped:texelSnapping=false,resolution=2048" \
     --config "bounds:directionalFit=bounds,resolution=2048" --out "$work/path-shimmer"
 
+# 10. The cost model: every technique at its defaults, timed, on a real model, the generated apron (one mesh) and
+#     the knob, with the reference pass's cost of one more read per fragment on each (--cost-model); then each
+#     variant's instructions as Mesa compiles them (MESA_GLSL=dump).
+"$bench" --scene cylinder-engine --scene apron-merged --scene knob --defaults --cost-model --frames 5 \
+    --out "$work/cost-model"
+/usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
+
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
 echo "wrote docs/RESULTS.md"

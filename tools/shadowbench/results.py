@@ -431,11 +431,41 @@ def defaults_section(views, real):
     out.append("\n".join(matrix) + "\n")
     technique, line = recommend(rows, real["results"])
     configured = views.get("defaultTechnique")
+    misses_section(rows, configured or technique)
     if configured == technique:
         line += "`ShadowSettings::technique` defaults to it."
     elif configured:
         line += f"`ShadowSettings::technique` is `{configured}`: the rule and the default differ."
     out.append(line + f" (The rule: tools/shadowbench/default_rule.py, memory budget {MEMORY_BUDGET_MIB:g} MiB.)\n")
+
+
+def misses_section(rows, default):
+    """Every view where the default technique misses the floor: what it misses by, and its texel density."""
+    misses = [r for r in rows if r["settings"]["technique"] == default and not meets_floor(r)]
+    out.append(f"### Where the default `{default}` misses the floor\n")
+    if not misses:
+        out.append("Nowhere: it meets the floor in every Defaults view.\n")
+        return
+    edge_only = [r for r in misses if all(v < FLOOR[k] for k, v in scored(r).items())]
+    others = {r["scene"]: sum(not meets_floor(o) for o in rows if o["scene"] == r["scene"] and not o["naive"])
+              for r in misses}
+    non_naive = len({o["settings"]["technique"] for o in rows if not o["naive"]})
+    out.append(f"{len(misses)} views, {len(edge_only)} of them on edge placement alone (acne, leak and darkening "
+               f"within the floor); the rows give the acne / leak / darkening rates, both edge distances (mean, 95th "
+               f"percentile), the fraction of lit receivers at m ≤ 1, the maps drawn and how many of the "
+               f"{non_naive} non-naive techniques miss there too.\n")
+    lines = ["| view | acne / leak / darkening | edges true→rendered px | edges rendered→true px | m ≤ 1 | maps | "
+             "techniques missing |", "| --- | --- | --- | --- | --- | --- | --- |"]
+    for r in misses:
+        e = r["edges"]
+        density = r.get("density") or {}
+        lines.append(f"| {r['scene']} | {100 * r['acneRate']:.3f} / {100 * r['leakRate']:.3f} / "
+                     f"{100 * r['darkening']:.3f} % | {e['trueToRendered']['mean']:.2f} / "
+                     f"{e['trueToRendered']['p95']:.1f} | {e['renderedToTrue']['mean']:.2f} / "
+                     f"{e['renderedToTrue']['p95']:.1f} | "
+                     + (f"{100 * density['atMostOnePixel']:.0f} %" if density else "–")
+                     + f" | {r['shadowMaps']} | {others[r['scene']]} |")
+    out.append("\n".join(lines) + "\n")
 
 
 CONTENT_SCENES = {"knob", "torus", "bowl", "thin-shell", "crease-cube", "grazing-plane", "spheres"}

@@ -72,9 +72,9 @@ enum class ShadowDebugView {
 /// here; what each field means, its unit, range and when it applies are in the one schema
 /// (shadows::settingsSchema(), generated into the settings table of docs/SHADOWS.md).
 struct ShadowSettings {
-    /// Visibility function; the default is the most accurate per millisecond on the real corpus
-    /// (docs/RESULTS.md, "Defaults").
-    ShadowTechnique technique = ShadowTechnique::Evsm;
+    /// Visibility function; the default is the one the rule of docs/RESULTS.md, "Defaults", recommends
+    /// (tools/shadowbench/default_rule.py: the floor in the most views, then memory, then error x time).
+    ShadowTechnique technique = ShadowTechnique::SlopeScaledBias;
     /// Width and height of each shadow map, texels.
     int resolution = 2048;
     /// Depth format of the shadow maps.
