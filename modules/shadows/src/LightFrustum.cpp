@@ -213,6 +213,25 @@ void snapSquare(float& extent, glm::vec2& centre, int resolution) {
     centre = glm::floor(centre / texel) * texel;
 }
 
+/// Completes an orthographic map of `result.view` over the square at `centre`, `extent` wide, between
+/// light-space depths `farthest` and `nearest` widened by `depthMargin`: its projection, texel scale and lit
+/// border, the whole texels from the region it must hold (`held`, light-space xy) to the map's edge, less
+/// `borderSlack`.
+void completeOrthographicMap(LightProjection& result, glm::vec2 centre, float extent, float nearest,
+                             float farthest, float depthMargin, int resolution, const Aabb& held,
+                             float borderSlack) {
+    const glm::vec2 half(0.5f * extent);
+    result.projection = glm::ortho(centre.x - half.x, centre.x + half.x, centre.y - half.y, centre.y + half.y,
+                                   -nearest - depthMargin, -farthest + depthMargin);
+    result.worldToShadow = kClipToTexture * result.projection * result.view;
+    result.texelScale = extent / static_cast<float>(resolution);
+    const glm::vec2 below = glm::vec2(held.min) - (centre - half);
+    const glm::vec2 above = (centre + half) - glm::vec2(held.max);
+    const float toEdge = std::min({below.x, below.y, above.x, above.y});
+    result.litBorderTexels = std::max(std::floor(toEdge / result.texelScale) - borderSlack, 0.0f);
+    result.valid = true;
+}
+
 /// The corners of a projection's view volume in view space, and its near and far view depths.
 struct FrustumCorners {
     std::array<glm::vec3, 4> nearPoints{};
@@ -329,15 +348,8 @@ LightProjection fitDirectionalLight(const glm::vec3& direction, const glm::mat4&
         return result;
     }
     const float depthMargin = 0.01f * std::max(nearest - farthest, 1e-3f);
-    result.projection = glm::ortho(centre.x - half.x, centre.x + half.x, centre.y - half.y, centre.y + half.y,
-                                   -nearest - depthMargin, -farthest + depthMargin);
-    result.worldToShadow = kClipToTexture * result.projection * result.view;
-    result.texelScale = extent / static_cast<float>(resolution);
-    const glm::vec2 belowCovered = glm::vec2(covered.min) - (centre - half);
-    const glm::vec2 aboveCovered = (centre + half) - glm::vec2(covered.max);
-    const float coveredToEdge = std::min({belowCovered.x, belowCovered.y, aboveCovered.x, aboveCovered.y});
-    result.litBorderTexels = std::max(std::floor(coveredToEdge / result.texelScale), 0.0f);
-    result.valid = true;
+    completeOrthographicMap(result, centre, extent, nearest, farthest, depthMargin, resolution, covered,
+                            0.0f);
     return result;
 }
 
@@ -382,15 +394,8 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
         farthest = std::floor((farthest - depthMargin) / step) * step;
         depthMargin = 0.0f;
     }
-    result.projection = glm::ortho(centre.x - half.x, centre.x + half.x, centre.y - half.y, centre.y + half.y,
-                                   -nearest - depthMargin, -farthest + depthMargin);
-    result.worldToShadow = kClipToTexture * result.projection * result.view;
-    result.texelScale = extent / static_cast<float>(resolution);
-    const glm::vec2 below = glm::vec2(samples.min) - (centre - half);
-    const glm::vec2 above = (centre + half) - glm::vec2(samples.max);
-    const float toEdge = std::min({below.x, below.y, above.x, above.y});
-    result.litBorderTexels = std::max(std::floor(toEdge / result.texelScale) - 2.0f, 0.0f);
-    result.valid = true;
+    completeOrthographicMap(result, centre, extent, nearest, farthest, depthMargin, resolution,
+                            Aabb{samples.min, samples.max}, 2.0f);
     return result;
 }
 
