@@ -255,8 +255,8 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     return result;
 }
 
-void ShadowBench::time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-                       BenchResult& result) const {
+ShadowBench::PassTimes ShadowBench::passTimes(engine::Engine& engine, const BenchScene& scene,
+                                              engine::RenderTarget& target) const {
     engine.setPassTiming(method_);
     std::vector<double> shadowTimes;
     std::vector<double> lightingTimes;
@@ -266,9 +266,15 @@ void ShadowBench::time(engine::Engine& engine, const BenchScene& scene, engine::
         lightingTimes.push_back(stats.lightingMilliseconds);
     }
     engine.setPassTiming(std::nullopt);
+    return {summarise(shadowTimes), summarise(lightingTimes)};
+}
+
+void ShadowBench::time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+                       BenchResult& result) const {
+    const PassTimes passes = passTimes(engine, scene, target);
     result.frame = timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames);
-    result.shadowPass = summarise(shadowTimes);
-    result.lightingPass = summarise(lightingTimes);
+    result.shadowPass = passes.shadow;
+    result.lightingPass = passes.lighting;
 }
 
 Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const {
@@ -372,14 +378,9 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
         }
     }
     const auto lightingPass = [&](engine::Engine& engine) {
-        engine.setPassTiming(method_);
-        engine.renderFrame(scene.scene_, scene.camera_, target);
-        std::vector<double> times;
-        for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
-            times.push_back(engine.renderFrame(scene.scene_, scene.camera_, target).lightingMilliseconds);
-        }
-        engine.setPassTiming(std::nullopt);
-        return summarise(times);
+        engine.renderFrame(scene.scene_, scene.camera_,
+                           target); // warm-up: a probe count's first draw compiles
+        return passTimes(engine, scene, target).lighting;
     };
     engine::Engine unshadowed;
     engine::Engine filtered;

@@ -242,6 +242,12 @@ public:
     [[nodiscard]] const BenchOptions& options() const { return options_; }
 
 private:
+    struct PassTimes {
+        PassTiming shadow;
+        PassTiming lighting;
+    };
+    /// The pre-pass and lighting-pass times of BenchOptions::frames frames of `engine` on `scene`.
+    PassTimes passTimes(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target) const;
     /// Pass and whole-frame times of `engine`, already warmed up on `scene`.
     void time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
               BenchResult& result) const;
