@@ -11,7 +11,7 @@ using namespace engine;
 
 namespace {
 
-constexpr glm::ivec2 kSize{64, 64};
+constexpr glm::ivec2 kTargetSize{64, 64};
 constexpr glm::vec3 kBase{0.5f, 0.25f, 0.125f};
 
 void expectPixel(const Image& image, glm::ivec2 at, glm::vec3 linear, int tolerance = 1) {
@@ -41,12 +41,12 @@ TEST_P(LitCubeGLTest, FaceShowsLambertPlusAmbientInSrgb) {
     Engine engine;
     engine.renderer().environment.ambient = glm::vec3(c.ambient);
     engine.renderer().environment.background = {0.2f, 0.4f, 0.6f};
-    RenderTarget target(kSize);
+    RenderTarget target(kTargetSize);
     engine.renderFrame(fixture.scene, fixture.camera, target);
     const Image image = target.readPixels();
 
     const float lambert = std::max(0.0f, std::cos(glm::radians(c.angleDegrees)));
-    expectPixel(image, kSize / 2, kBase * (c.ambient + lambert * c.intensity));
+    expectPixel(image, kTargetSize / 2, kBase * (c.ambient + lambert * c.intensity));
     expectPixel(image, {1, 1}, {0.2f, 0.4f, 0.6f}); // outside the cube: the clear colour
 }
 
@@ -70,13 +70,13 @@ TEST(RenderGLTest, SpotLightFallsOffWithInverseSquareAndCone) {
     fixture.scene.entity(spot).transform = Transform::lookAt({0, 0, 3}, {0, 0, 0});
     Engine engine;
     engine.renderer().environment.ambient = glm::vec3(0.0f);
-    RenderTarget target(kSize);
+    RenderTarget target(kTargetSize);
     engine.renderFrame(fixture.scene, fixture.camera, target);
     const Image image = target.readPixels();
     // Centre: on axis, lambert ≈ 1, attenuation 1/d² with d = 2.
-    expectPixel(image, kSize / 2, kBase, 2);
+    expectPixel(image, kTargetSize / 2, kBase, 2);
     // Face corner (x = y = 0.9): 1.27 units off axis, angle atan(1.27/2) = 0.57 rad > outer cone: dark.
-    expectPixel(image, {kSize.x / 2 + 14, kSize.y / 2 + 14}, glm::vec3(0.0f));
+    expectPixel(image, {kTargetSize.x / 2 + 14, kTargetSize.y / 2 + 14}, glm::vec3(0.0f));
 }
 
 namespace {
@@ -87,13 +87,13 @@ std::vector<float> renderLinear(const Scene& scene, EntityId camera, OutputMode 
     Engine engine;
     engine.renderer().environment.ambient = glm::vec3(0.0f);
     engine.renderer().output = output;
-    RenderTarget target(kSize, ColorFormat::Rgba32F);
+    RenderTarget target(kTargetSize, ColorFormat::Rgba32F);
     engine.renderFrame(scene, camera, target);
     return target.readPixelsFloat();
 }
 
 glm::vec3 texel(const std::vector<float>& pixels, glm::ivec2 at) {
-    const std::size_t i = 4 * static_cast<std::size_t>(at.y * kSize.x + at.x);
+    const std::size_t i = 4 * static_cast<std::size_t>(at.y * kTargetSize.x + at.x);
     return {pixels[i], pixels[i + 1], pixels[i + 2]};
 }
 
@@ -185,9 +185,9 @@ TEST(RenderGLTest, MeshWithoutNormalsUsesFlatVariantAndSameShading) {
     fixture.addDirectionalLight(glm::radians(60.0f), 1.0f);
     Engine engine;
     engine.renderer().environment.ambient = glm::vec3(0.0f);
-    RenderTarget target(kSize);
+    RenderTarget target(kTargetSize);
     engine.renderFrame(fixture.scene, fixture.camera, target);
-    expectPixel(target.readPixels(), kSize / 2, kBase * 0.5f);
+    expectPixel(target.readPixels(), kTargetSize / 2, kBase * 0.5f);
 }
 
 TEST(RenderGLTest, OnlyVariantsActuallyDrawnAreCompiled) {
@@ -195,7 +195,7 @@ TEST(RenderGLTest, OnlyVariantsActuallyDrawnAreCompiled) {
     LitCubeScene fixture(kBase);
     fixture.addDirectionalLight(0.0f, 1.0f);
     Engine engine;
-    RenderTarget target(kSize);
+    RenderTarget target(kTargetSize);
     EXPECT_EQ(engine.programs().compileCount(), 0u); // nothing compiled before the first draw
     engine.renderFrame(fixture.scene, fixture.camera, target);
     EXPECT_EQ(engine.programs().compileCount(), 1u);
@@ -222,9 +222,9 @@ TEST(RenderGLTest, ChildEntitiesFollowTheirParent) {
     fixture.scene.entity(pivot).transform.translation = {10, 0, 0}; // out of view
     Engine engine;
     engine.renderer().environment.background = glm::vec3(0.0f);
-    RenderTarget target(kSize);
+    RenderTarget target(kTargetSize);
     engine.renderFrame(fixture.scene, fixture.camera, target);
-    expectPixel(target.readPixels(), kSize / 2, glm::vec3(0.0f));
+    expectPixel(target.readPixels(), kTargetSize / 2, glm::vec3(0.0f));
 }
 
 TEST(RenderGLTest, PassTimingReportsBothPassesOnlyWhenEnabled) {
@@ -232,7 +232,7 @@ TEST(RenderGLTest, PassTimingReportsBothPassesOnlyWhenEnabled) {
     LitCubeScene fixture(kBase);
     fixture.addDirectionalLight(0.0f, 1.0f);
     Engine engine;
-    RenderTarget target(kSize);
+    RenderTarget target(kTargetSize);
     FrameStats stats = engine.renderFrame(fixture.scene, fixture.camera, target);
     EXPECT_LT(stats.prePassMilliseconds, 0.0);
     EXPECT_LT(stats.lightingMilliseconds, 0.0);

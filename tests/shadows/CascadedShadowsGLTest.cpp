@@ -152,7 +152,7 @@ std::vector<CascadeCase> everyTechniqueAndCascadeCount() {
 
 class CascadedShadowsGLTest : public testing::TestWithParam<CascadeCase> {};
 
-constexpr glm::ivec2 kSize{400, 225};
+constexpr glm::ivec2 kViewSize{400, 225};
 
 } // namespace
 
@@ -164,7 +164,7 @@ TEST_P(CascadedShadowsGLTest, EveryTechniqueAtItsDefaultsStaysUnderMeasuredThres
     settings.technique = c.technique;
     settings.cascadeCount = c.cascades;
     settings.resolution = 1024;
-    const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, kSize);
+    const ShadowMeasurement m = ShadowMeasurement::render(scene, camera, settings, kViewSize);
     ASSERT_EQ(m.projections.size(), static_cast<std::size_t>(c.cascades)); // every slice has receivers
     const ShadowErrors errors = measureOpenGround(m, scene, camera, settings);
     std::cout << "[ measured ] " << toString(c.technique) << " x" << c.cascades << ": acne "

@@ -22,7 +22,7 @@ const glm::vec3 kLamp(0.0f, 3.0f, 0.0f);
 // Boxes on the floor around the lamp: their shadows run out across the floor, over the edges where the floor
 // leaves the -Y face for the side faces (|x| or |z| = 3 there) and along the diagonals where two side faces
 // meet.
-const testsupport::Block kBlocks[] = {
+const testsupport::Block kBlocksAroundLamp[] = {
     {{1.0f, 0.0f, -0.5f}, {1.8f, 1.2f, 0.5f}},    {{-2.2f, 0.0f, 1.6f}, {-1.2f, 0.8f, 2.6f}},
     {{1.3f, 0.0f, 1.3f}, {2.1f, 1.6f, 2.1f}},     {{-0.4f, 0.0f, -2.4f}, {0.4f, 2.0f, -1.6f}},
     {{-2.5f, 0.0f, -2.5f}, {-1.9f, 1.0f, -1.9f}}, {{3.5f, 0.0f, -4.0f}, {4.5f, 1.5f, -3.0f}}};
@@ -30,7 +30,7 @@ const testsupport::Block kBlocks[] = {
 engine::Scene lampRoom(engine::EntityId& camera) {
     engine::Scene scene;
     testsupport::addGround(scene, 24.0f);
-    testsupport::addBlocks(scene, kBlocks);
+    testsupport::addBlocks(scene, kBlocksAroundLamp);
     const auto lamp = scene.create("lamp");
     engine::LightComponent light;
     light.type = engine::LightType::Point;
@@ -43,10 +43,10 @@ engine::Scene lampRoom(engine::EntityId& camera) {
     return scene;
 }
 
-bool shadowedByBlocks(const glm::vec3& p) {
+bool shadowedFromLamp(const glm::vec3& p) {
     const glm::vec3 offset = kLamp - p;
     const float distance = glm::length(offset);
-    return testsupport::blocksRay(kBlocks, p, offset / distance, distance);
+    return testsupport::blocksRay(kBlocksAroundLamp, p, offset / distance, distance);
 }
 
 /// Whether `p` lies within `texels` texels of an edge of the cube face it reads (its direction's two largest
@@ -74,10 +74,10 @@ PointErrors measureLampRoom(const ShadowMeasurement& m, int resolution) {
         // Three texels at the receiver's distance (a face's texel there is at most this large), away from
         // true edges in two directions across the light.
         const float band = 3.0f * texelScale * glm::length(kLamp - p) + 0.01f;
-        if (!awayFromShadowEdges(p, toLight, band, shadowedByBlocks)) {
+        if (!awayFromShadowEdges(p, toLight, band, shadowedFromLamp)) {
             continue;
         }
-        const bool shadowed = shadowedByBlocks(p);
+        const bool shadowed = shadowedFromLamp(p);
         errors.all.add(shadowed, m.visibility[i]);
         if (nearSeam(p, 8.0f, resolution)) {
             errors.seam.add(shadowed, m.visibility[i]);

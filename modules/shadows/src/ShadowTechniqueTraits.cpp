@@ -7,7 +7,7 @@ namespace shadows {
 namespace {
 
 using T = ShadowTechnique;
-using S = MapSampler;
+using Sampler = MapSampler;
 
 // Footprints of the hardware comparisons (ShadowTechniqueTraits::footprintTexels). A NEAREST comparison reads
 // the texel its lookup falls in, whose centre (where the caster's depth was rasterised) is up to half a texel
@@ -60,7 +60,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardwarePcf,
      .name = "hw-pcf",
      .summary = "hardware 2×2 bilinear PCF (LINEAR)",
-     .sampler = S::CompareLinear,
+     .sampler = Sampler::CompareLinear,
      .defines = {"GS_SHADOW_SINGLE_COMPARE"},
      .footprintTexels = bilinearReach,
      .biasesDepth = true},
@@ -78,7 +78,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .summary = "linear-filtered depth, fuzzy comparison `saturate(diff/|g| + 1)`; g stored by the depth "
                 "pass, central differences, or screen-space receiver plane",
      .reference = "GSM reference, \"Overview\"",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_GSM"},
      .readsPointGradient = true,
      .footprintTexels = nearestReach,
@@ -89,7 +89,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .name = "pcf-gsm-naive",
      .summary = "PCF over GSM, taps at the fragment's depth (reproduces the darkening)",
      .reference = "GSM reference, Fig. 4.2.3",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NONE"},
      .readsPointGradient = true,
      .usesTapPattern = true,
@@ -99,7 +99,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .name = "pcf-gsm-point",
      .summary = "PCF over GSM, taps follow `dot(offset, g)` of the fragment's gradient",
      .reference = "Fig. 4.2.4b",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_POINT"},
      .readsPointGradient = true,
      .usesTapPattern = true,
@@ -112,7 +112,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .summary = "PCF over GSM, taps follow the least-squares gradient of the taps' own depths: general "
                 "(precomputed inverse covariance), circular-8 closed form, circular-8 vec4 form",
      .reference = "\"Optimizing Texture Look-ups\", \"SIMD\"",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_AVERAGE"},
      .readsPointGradient = true,
      .usesTapPattern = true,
@@ -125,7 +125,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .summary = "PCF over GSM, taps follow a least-squares quadric of the taps' depths (precomputed 6×N "
                 "pseudo-inverse)",
      .reference = "the reference's \"obvious improvement\"",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_QUADRATIC"},
      .readsPointGradient = true,
      .usesTapPattern = true,
@@ -139,7 +139,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
          "PCF over GSM, each tap compared at the nearer (to the light) of the point- and average-gradient "
          "predictions, so a concave crease darkens no more than under either",
      .reference = "ours: docs/SHADOWS.md, \"Why the average gradient darkens concave regions more\"",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_NEARER"},
      .readsPointGradient = true,
      .usesTapPattern = true,
@@ -152,7 +152,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .summary = "dz/duv from screen derivatives (zero where the Jacobian is singular), per-texel bias with "
                 "optional `min(0, bias)`, 2×2 bilinear via `textureGather`, or per tap",
      .reference = "bias reference, \"Receiver Plane Depth Bias\"",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_RECEIVER_PLANE"},
      .footprintTexels = nearestReach,
      .biasesDepth = true},
@@ -171,7 +171,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
                 "Chebyshev bound with `vsmMinimumVariance`, `lightBleedingReduction` and the early "
                 "return where the mean is beyond the receiver",
      .reference = "advanced shadow mapping reference, \"Variance Shadow Maps\"",
-     .sampler = S::Moments,
+     .sampler = Sampler::Moments,
      .defines = {"GS_SHADOW_VSM"},
      .moments = {"GS_SHADOW_STORE_MOMENTS2", [](const ShadowSettings&) -> GLenum { return GL_RG32F; },
                  [](const ShadowSettings&) { return glm::vec4(1.0f); }},
@@ -182,7 +182,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .summary = "4 moments, Hamburger bound via Cholesky with `msmMomentBias` towards (0, 0.63, 0, 0.63); "
                 "RGBA32F, or RGBA16 through the optimised moment basis (`msmQuantize16`, 64 bits per texel)",
      .reference = "same, \"Moment Shadow Maps\"; Peters & Klein 2015",
-     .sampler = S::Moments,
+     .sampler = Sampler::Moments,
      .defines = {"GS_SHADOW_MSM"},
      .moments = {"GS_SHADOW_STORE_MOMENTS4",
                  [](const ShadowSettings& s) -> GLenum { return s.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F; },
@@ -196,7 +196,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
                 "(`evsmPositiveExponent`, `evsmNegativeExponent`), both warps and their squares in RGBA32F, "
                 "filtered like `vsm`'s moments; Chebyshev's bound on each warp, the smaller one wins",
      .reference = "Lauritzen & McCool, \"Layered variance shadow maps\", GI 2008, exponential warping",
-     .sampler = S::Moments,
+     .sampler = Sampler::Moments,
      .defines = {"GS_SHADOW_EVSM"},
      .moments = {"GS_SHADOW_STORE_EVSM", [](const ShadowSettings&) -> GLenum { return GL_RGBA32F; },
                  [](const ShadowSettings& s) { return glsl::gsEvsmMoments(1.0f, evsmExponents(s)); }},
@@ -244,7 +244,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
                 "failing tap that continues a lit nearer one without a jump is the receiver's own surface "
                 "(a concave crease) and counts as lit, since shadows' edges are jumps in the map",
      .reference = "ours: docs/SHADOWS.md, \"Connected taps\"",
-     .sampler = S::DepthLinear,
+     .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCF_GSM", "GS_SHADOW_CORRECTION_CONNECTED"},
      .readsPointGradient = true,
      .usesTapPattern = true,
