@@ -316,6 +316,11 @@ engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBloc
     if (slots_.size() == 1) {
         key |= host_->variantFlag("GS_SHADOW_ONE_MAP");
     }
+    // Only directional maps: no perspective divide or distance-scaled texel in the lookups.
+    if (std::none_of(slots_.begin(), slots_.end(),
+                     [](const MapSlot& slot) { return slot.projection.perspective; })) {
+        key |= host_->variantFlag("GS_SHADOW_ORTHOGRAPHIC");
+    }
     return key;
 }
 

@@ -110,7 +110,8 @@ private:
     void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit);
     [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;
     /// The variant bits of the map layouts (LightMapsKind) `lights` use, which the lighting pass compiles
-    /// alone, and GS_SHADOW_ONE_MAP where the frame has one map.
+    /// alone, GS_SHADOW_ONE_MAP where the frame has one map, and GS_SHADOW_ORTHOGRAPHIC where every map is
+    /// orthographic.
     [[nodiscard]] engine::ShaderVariantKey layoutKey(const std::vector<LightMapsBlock>& lights) const;
 
     ShadowSettings settings_;

@@ -17,6 +17,12 @@
 #define GS_SHADOW_DEBUG_VIEW
 #endif
 
+// GS_SHADOW_KEEP_PERSPECTIVE exists for the test that shows the orthographic variant changes no image: the
+// generic lookups then run on orthographic maps too.
+#ifdef GS_SHADOW_KEEP_PERSPECTIVE
+#undef GS_SHADOW_ORTHOGRAPHIC
+#endif
+
 // Every map of the frame is a layer (its slot) of one array: a fragment may pick its cascade or cube face
 // itself, which a sampler array would not allow (its index must be uniform).
 #ifdef GS_SHADOW_SAMPLER_COMPARE
@@ -118,7 +124,11 @@ vec4 gsShadowMoments(GsShadowLookup lookup) {
 // projection (clip.xyz / clip.w), exact for perspective maps too.
 vec3 gsShadowDerivative(mat4 m, vec4 clip, vec3 d) {
     vec4 dClip = m * vec4(d, 0.0);
+#ifdef GS_SHADOW_ORTHOGRAPHIC
+    return dClip.xyz; // w is 1 and its derivative 0
+#else
     return (dClip.xyz - clip.xyz * (dClip.w / clip.w)) / clip.w;
+#endif
 }
 
 // The receiver's own facet, on the side the camera sees: with window x right and y up, dP/dx × dP/dy faces the
@@ -159,7 +169,13 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     // value holds at any scene scale, map size and cascade.
     mat4 m = gsShadowMatrix[slot];
     vec4 wRow = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+#ifdef GS_SHADOW_ORTHOGRAPHIC
+    // Every map of the frame is orthographic (ShadowModule::layoutKey): their matrices' last row is exactly
+    // (0, 0, 0, 1), so clip w is exactly 1 and the perspective terms drop out of the variant.
+    const bool perspective = false;
+#else
     bool perspective = gsShadowTexel[slot].w > 0.5;
+#endif
     float texelSize =
         gsShadowTexel[slot].z * (perspective ? abs(dot(wRow, vec4(fragment.position, 1.0))) : 1.0);
     vec3 position = fragment.position + fragment.toLight * (gsShadowConstantBiasTexels * texelSize);
@@ -173,10 +189,14 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     position += fragment.normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
 #endif
     vec4 clip = m * vec4(position, 1.0);
+#ifdef GS_SHADOW_ORTHOGRAPHIC
+    vec3 coord = clip.xyz;
+#else
     if (clip.w <= 0.0) {
         return 1.0; // behind a perspective map's light: nothing is mapped (the light's falloff is zero there)
     }
     vec3 coord = clip.xyz / clip.w;
+#endif
     // Outside the map, or in a fitted directional map's lit border: no caster can shadow the receiver there,
     // and its kernel would read across the map's edge (a fit or central difference over the border's far
     // depth predicts taps far behind the receiver, which then look shadowed).
@@ -198,7 +218,11 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     if (lookup.depth >= 1.0) {
         return 1.0; // beyond the map's depth range: nothing can occlude
     }
+#ifdef GS_SHADOW_ORTHOGRAPHIC
+    lookup.momentDepth = lookup.depth; // gsLinearDepth's identity for an orthographic map
+#else
     lookup.momentDepth = gsLinearDepth(lookup.depth, gsShadowDepthRange[slot].xy);
+#endif
     lookup.screenGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
     vec3 dx = gsShadowDerivative(m, clip, fragment.dPdx);
