@@ -270,7 +270,11 @@ FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Mo
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
-    glClearColor(environment.background.r, environment.background.g, environment.background.b, 1.0f);
+    if (output == OutputMode::Shaded) {
+        glClearColor(environment.background.r, environment.background.g, environment.background.b, 1.0f);
+    } else {
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f); // alpha 1 marks the pixels a surface covers (forward.frag)
+    }
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());

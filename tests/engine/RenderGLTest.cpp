@@ -146,6 +146,24 @@ TEST(RenderGLTest, PointLightFallsOffWithTheInverseSquareInEveryDirection) {
     EXPECT_NEAR(texel(shaded, kOnAxis).r / texel(shaded, kFar).r, expectedRatio, 0.01f * expectedRatio);
 }
 
+TEST(RenderGLTest, MeasurementOutputsMarkOnlyCoveredPixels) {
+    glTestContext();
+    LitCubeScene fixture(kBase);
+    for (const OutputMode output : {OutputMode::WorldPosition, OutputMode::WorldNormal}) {
+        const std::vector<float> pixels = renderLinear(fixture.scene, fixture.camera, output);
+        const auto alpha = [&](glm::ivec2 at) {
+            return pixels[4 * static_cast<std::size_t>(at.y * kTargetSize.x + at.x) + 3];
+        };
+        EXPECT_EQ(alpha(kOnAxis), 1.0f) << "the cube's face";
+        // The corner shows no surface: the background's colour must not read as a surface there.
+        EXPECT_EQ(alpha({0, 0}), 0.0f);
+        EXPECT_EQ(texel(pixels, {0, 0}), glm::vec3(0.0f));
+    }
+    const std::vector<float> shaded = renderLinear(fixture.scene, fixture.camera, OutputMode::Shaded);
+    EXPECT_EQ(texel(shaded, {0, 0}), Engine().renderer().environment.background)
+        << "the corner is background";
+}
+
 class PositionalRangeGLTest : public testing::TestWithParam<LightType> {};
 
 TEST_P(PositionalRangeGLTest, RangeWindowsTheFalloffToZeroAtTheRange) {

@@ -467,11 +467,11 @@ def misses_section(rows, default):
                      + f" | {r['shadowMaps']} | {others[r['scene']]} | {miss_kind(r)} |")
     out.append("\n".join(lines) + "\n")
     out.append("A true edge the image lacks (true→rendered beyond the floor) is a shadow the truth has and the image "
-               "does not. On the terrain these are mostly isolated shadowed pixels of the truth scattered over lit "
-               "slopes (the '+' marks of `<view>/truth.png` and `<view>/<technique>-classes.png`: one pixel and its "
-               "band): too small for any map here, and every technique misses them alike; whether each is relief "
-               "shadowing itself or the tracer's own is not settled. An edge the truth lacks (rendered→true) is a "
-               "rendered edge off the true one, or a speckle line.\n")
+               "does not. On the terrain these are mostly isolated shadowed pixels of the truth over lit slopes, and "
+               "clusters of two or three: the shadows of the terrain's own relief, a crest one to three pixels away "
+               "shading the facets behind it, narrower than a texel of any map here, so every technique misses them "
+               "alike. An edge the truth lacks (rendered→true) is a rendered edge off the true one, or a speckle "
+               "line.\n")
 
 
 def miss_kind(r):
