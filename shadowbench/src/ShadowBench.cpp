@@ -378,8 +378,8 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
         }
     }
     const auto lightingPass = [&](engine::Engine& engine) {
-        engine.renderFrame(scene.scene_, scene.camera_,
-                           target); // warm-up: a probe count's first draw compiles
+        // Warm-up: a probe count's first draw compiles its program.
+        engine.renderFrame(scene.scene_, scene.camera_, target);
         return passTimes(engine, scene, target).lighting;
     };
     engine::Engine unshadowed;
