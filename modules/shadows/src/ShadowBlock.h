@@ -16,11 +16,12 @@ inline constexpr int kMaxMaps = 24;
 inline constexpr GLuint kShadowBlockBinding = 1;
 
 /// @brief How a light's maps are laid out (GS_SHADOW_LIGHT_* in block.glsl).
-enum class LightMapsKind : std::int32_t { None = 0, Single = 1, Cascades = 2, Cube = 3 };
+enum class LightMapsKind : std::int32_t { None = 0, Single = 1, Cascades = 2, Cube = 3, Virtual = 4 };
 
 /// @brief std140 mirror of GsShadowLightMaps: which maps a light has and how a fragment picks one.
 struct alignas(16) LightMapsBlock {
-    /// x: LightMapsKind, y: cascade count.
+    /// x: LightMapsKind, y: cascade count or clipmap levels; Virtual: z the first level's slot (the levels'
+    /// slots follow it), w its page-table layer.
     glm::ivec4 kind;
     /// Map slot of the single map (x), of each cascade, or of cube faces 0–3; -1: not drawn this frame.
     glm::ivec4 slots;
@@ -70,6 +71,10 @@ struct alignas(16) ShadowBlock {
     float cascadeBlend;
     /// The depth bias's arithmetic floor in an orthographic map's depth units (ShadowPlan::depthBiasFloor).
     float depthBiasFloor;
+    /// Virtual maps: x pages per side of a clipmap level, y atlas tiles per row, z atlas side in texels.
+    alignas(16) glm::ivec4 virtualPages;
+    /// Virtual maps: x page side, y tile side, z border in texels, w 1 / atlas side.
+    alignas(16) glm::vec4 virtualPage;
 };
 
 static_assert(offsetof(ShadowBlock, texel) == 64 * kMaxMaps);
@@ -85,5 +90,8 @@ static_assert(offsetof(ShadowBlock, tapDisplace) == offsetof(ShadowBlock, receiv
 static_assert(offsetof(ShadowBlock, depthBias) == offsetof(ShadowBlock, tapDisplace) + 4);
 static_assert(offsetof(ShadowBlock, cascadeBlend) == offsetof(ShadowBlock, depthBias) + 4);
 static_assert(offsetof(ShadowBlock, depthBiasFloor) == offsetof(ShadowBlock, cascadeBlend) + 4);
+static_assert(offsetof(ShadowBlock, virtualPages) % 16 == 0 &&
+              offsetof(ShadowBlock, virtualPages) - offsetof(ShadowBlock, depthBiasFloor) <= 16);
+static_assert(offsetof(ShadowBlock, virtualPage) == offsetof(ShadowBlock, virtualPages) + 16);
 
 } // namespace shadows

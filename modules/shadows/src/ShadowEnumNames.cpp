@@ -48,6 +48,13 @@ std::span<const EnumName<DirectionalFit>> enumNames() {
 }
 
 template <>
+std::span<const EnumName<MapAllocation>> enumNames() {
+    static constexpr std::array<EnumName<MapAllocation>, 2> names{
+        {{MapAllocation::Fitted, "fitted"}, {MapAllocation::Virtual, "virtual"}}};
+    return names;
+}
+
+template <>
 std::span<const EnumName<CasterFaces>> enumNames() {
     static constexpr std::array<EnumName<CasterFaces>, 3> names{
         {{CasterFaces::Both, "both"}, {CasterFaces::Front, "front"}, {CasterFaces::Back, "back"}}};

@@ -2,6 +2,7 @@
 #include "ShadowBlock.h"
 #include "ShadowMapArray.h"
 #include "ShadowSamplers.h"
+#include "VirtualShadowMaps.h"
 #include "VisibleSamples.h"
 
 #include <shadows/ShadowModule.h>
@@ -79,6 +80,11 @@ ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
     stats.shadowMaps = static_cast<int>(slots_.size());
     stats.bytes = maps_ ? maps_->bytes(plan_) : 0;
+    stats.virtualMaps = virtualFrame_;
+    if (virtualFrame_ && virtual_) {
+        stats.bytes += virtual_->bytes();
+        stats.pages = virtual_->stats();
+    }
     return stats;
 }
 
@@ -108,6 +114,7 @@ void ShadowModule::attach(engine::ModuleHost& host) {
     mapUnit_ = host.reserveTextureUnit();
     gradientUnit_ = host.reserveTextureUnit();
     jitterUnit_ = host.reserveTextureUnit();
+    pageTableUnit_ = host.reserveTextureUnit();
     dirty_ = true;
 }
 
@@ -124,6 +131,8 @@ void ShadowModule::detach() {
 void ShadowModule::releaseResources() {
     slots_.clear();
     maps_.reset();
+    virtual_.reset();
+    virtualFrame_ = false;
     uploadedFrame_.clear();
 }
 
@@ -209,16 +218,82 @@ int ShadowModule::addSlot(int lightIndex, const LightProjection& projection) {
     if (!projection.valid || slots_.size() == static_cast<std::size_t>(kMaxMaps)) {
         return -1;
     }
-    slots_.push_back({lightIndex, projection});
+    slots_.push_back({lightIndex, projection, settings_.resolution});
     return static_cast<int>(slots_.size()) - 1;
+}
+
+bool ShadowModule::fitVirtualMaps(const engine::FrameContext& frame, const FitView& fit,
+                                  std::span<const Aabb> boxes,
+                                  const std::map<engine::EntityId, Aabb>& casters,
+                                  std::vector<LightMapsBlock>& lights) {
+    std::vector<engine::FrameLight> directional;
+    for (const engine::FrameLight& light : frame.lights) {
+        if (!light.light.castsShadows) {
+            continue;
+        }
+        if (light.light.type != engine::LightType::Directional) {
+            // One sampler holds every map a lookup reads: the atlas, or the fitted maps' array.
+            if (!warnedVirtualFallback_) {
+                std::cerr
+                    << "shadows: virtual maps serve directional lights only, and this frame has a spot or "
+                       "point light casting shadows: every light uses fitted maps while it does\n";
+                warnedVirtualFallback_ = true;
+            }
+            return false;
+        }
+        directional.push_back(light);
+    }
+    if (directional.empty()) {
+        return false;
+    }
+    if (!samples_) {
+        samples_ = std::make_unique<VisibleSamples>();
+    }
+    samples_->draw(*host_, frame, fit);
+    if (!virtual_) {
+        virtual_ = std::make_unique<VirtualShadowMaps>(settings_, plan_);
+    }
+    const std::vector<VirtualShadowMaps::Light> clipmaps = virtual_->update(
+        *host_, fit, directional, casters, boxes, samples_->depthTexture(), samples_->size());
+    for (const VirtualShadowMaps::Light& clipmap : clipmaps) {
+        if (slots_.size() + kClipmapLevels > static_cast<std::size_t>(kMaxMaps)) {
+            std::cerr << "shadows: light " << clipmap.index << " casts no shadow this frame: its "
+                      << kClipmapLevels << " clipmap levels do not fit the " << kMaxMaps
+                      << " map slots beside the others\n";
+            continue;
+        }
+        const int first = static_cast<int>(slots_.size());
+        for (int level = 0; level < kClipmapLevels; ++level) {
+            slots_.push_back({clipmap.index,
+                              clipmap.geometry.levelProjection(clipmap.geometry.finestLevel + level),
+                              kVirtualResolution});
+        }
+        lights[static_cast<std::size_t>(clipmap.index)].kind =
+            glm::ivec4(static_cast<int>(LightMapsKind::Virtual), kClipmapLevels, first, clipmap.pageLayer);
+    }
+    const VirtualPageStats& pages = virtual_->stats();
+    if ((pages.coarsened > 0 || pages.refused > 0) && !warnedPageBudget_) {
+        std::cerr << "shadows: the page budget (virtualBudgetMiB " << settings_.virtualBudgetMiB << ", "
+                  << pages.poolPages
+                  << " pages) holds fewer pages than the view asks for: " << pages.coarsened
+                  << " requests moved to coarser levels, " << pages.refused
+                  << " left without texels (lit); the stats count them every frame\n";
+        warnedPageBudget_ = true;
+    }
+    return true;
 }
 
 void ShadowModule::fitMaps(const engine::FrameContext& frame) {
     // World bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
     std::vector<Aabb> boxes;
-    host_->forEachMeshBounds(frame.scene, [&](engine::EntityId, const glm::mat4& model, const Aabb& local) {
-        boxes.push_back(local.transformed(model));
-    });
+    std::map<engine::EntityId, Aabb> casters; // the same by entity: virtual maps redraw where one moved
+    host_->forEachMeshBounds(frame.scene,
+                             [&](engine::EntityId entity, const glm::mat4& model, const Aabb& local) {
+                                 boxes.push_back(local.transformed(model));
+                                 if (settings_.mapAllocation == MapAllocation::Virtual) {
+                                     casters[entity].extend(boxes.back());
+                                 }
+                             });
 
     const FitView fit = fitView_.value_or(FitView{frame.view, frame.projection});
     const glm::mat4 fitViewProjection = fit.projection * fit.view;
@@ -228,10 +303,14 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
 
     slots_.clear();
     std::vector<LightMapsBlock> lights(engine::ForwardRenderer::kMaxLights);
+    for (LightMapsBlock& maps : lights) {
+        maps.slots = maps.faceSlots = glm::ivec4(-1);
+    }
+    virtualFrame_ = settings_.mapAllocation == MapAllocation::Virtual &&
+                    fitVirtualMaps(frame, fit, boxes, casters, lights);
     for (const engine::FrameLight& light : frame.lights) {
         LightMapsBlock& maps = lights[static_cast<std::size_t>(light.index)];
-        maps.slots = maps.faceSlots = glm::ivec4(-1);
-        if (!light.light.castsShadows) {
+        if (!light.light.castsShadows || virtualFrame_) {
             continue;
         }
         // The slot of a fitted map, -1 when it has nothing to draw or every slot is taken.
@@ -293,8 +372,10 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
         maps_.reset(); // nothing casts this frame: give the memory back
         return;
     }
-    // The arrays hold exactly the maps in use; a change in their number reallocates them.
-    if (!maps_ || maps_->layers() != static_cast<int>(slots_.size())) {
+    if (virtualFrame_) {
+        maps_.reset(); // the levels read the pool's atlas
+    } else if (!maps_ || maps_->layers() != static_cast<int>(slots_.size())) {
+        // The arrays hold exactly the maps in use; a change in their number reallocates them.
         maps_ = std::make_unique<ShadowMapArray>(resolution, static_cast<int>(slots_.size()), plan_);
     }
     layoutKey_ = layoutKey(lights);
@@ -304,8 +385,9 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
 engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBlock>& lights) const {
     // llvmpipe runs both sides of every branch under a mask, so a layout compiled in costs its lookups on
     // every fragment whether a light uses it or not; only this frame's layouts are compiled.
-    constexpr std::array<std::string_view, 4> kDefines{"", "GS_SHADOW_LAYOUT_SINGLE",
-                                                       "GS_SHADOW_LAYOUT_CASCADES", "GS_SHADOW_LAYOUT_CUBE"};
+    constexpr std::array<std::string_view, 5> kDefines{"", "GS_SHADOW_LAYOUT_SINGLE",
+                                                       "GS_SHADOW_LAYOUT_CASCADES", "GS_SHADOW_LAYOUT_CUBE",
+                                                       "GS_SHADOW_LAYOUT_VIRTUAL"};
     engine::ShaderVariantKey key = 0;
     for (const LightMapsBlock& maps : lights) {
         if (maps.kind.x > 0) {
@@ -345,7 +427,10 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
     }
     glDisable(GL_FRAMEBUFFER_SRGB);
-    for (std::size_t layer = 0; layer < slots_.size(); ++layer) {
+    if (virtualFrame_) {
+        virtual_->render(*host_, frame.scene, program, plan_.momentsClear);
+    }
+    for (std::size_t layer = 0; maps_ && layer < slots_.size(); ++layer) {
         const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
         const LightProjection& projection = slots_[layer].projection;
         framebuffer.bind();
@@ -369,7 +454,7 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
-    if (plan_.blursMoments) {
+    if (plan_.blursMoments && maps_) {
         blurMoments();
     }
 }
@@ -419,11 +504,16 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         glBindTextureUnit(jitterUnit_, jitter_->id());
         glBindSampler(jitterUnit_, 0);
     }
-    glBindTextureUnit(mapUnit_, maps_->sampledTexture());
+    const ShadowMapArray& maps = virtualFrame_ ? virtual_->atlas() : *maps_;
+    glBindTextureUnit(mapUnit_, maps.sampledTexture());
     glBindSampler(mapUnit_, samplers_->forMap(plan_.sampler));
-    if (maps_->gradient) {
-        glBindTextureUnit(gradientUnit_, maps_->gradient->id());
+    if (maps.gradient) {
+        glBindTextureUnit(gradientUnit_, maps.gradient->id());
         glBindSampler(gradientUnit_, samplers_->linear());
+    }
+    if (virtualFrame_) {
+        glBindTextureUnit(pageTableUnit_, virtual_->pageTable());
+        glBindSampler(pageTableUnit_, 0);
     }
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());
     auto& uploaded = uploadedFrame_[program.id()];
@@ -440,6 +530,9 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
         glProgramUniform1i(id, location, static_cast<GLint>(gradientUnit_));
     }
     program.set("gsShadowJitter", static_cast<int>(jitterUnit_));
+    if (const GLint location = program.uniformLocation("gsShadowPageTable"); location >= 0) {
+        glProgramUniform1i(id, location, static_cast<GLint>(pageTableUnit_));
+    }
     if (const GLint location = program.uniformLocation("gsTapOffsets"); location >= 0) {
         glProgramUniform2fv(id, location, static_cast<GLsizei>(pattern_.offsets.size()),
                             glm::value_ptr(pattern_.offsets[0]));
@@ -459,12 +552,12 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
 
 void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit) {
     ShadowBlock block{};
-    const float resolution = static_cast<float>(settings_.resolution);
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         block.worldToShadow[slot] = glm::mat4(1.0f);
     }
     for (std::size_t slot = 0; slot < slots_.size(); ++slot) {
         const LightProjection& projection = slots_[slot].projection;
+        const auto resolution = static_cast<float>(slots_[slot].resolution);
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
@@ -493,6 +586,10 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
     block.tapCount = static_cast<std::int32_t>(pattern_.offsets.size());
     block.tapDisplace = settings_.pcfRadius / std::sqrt(2.0f);
     block.cascadeBlend = settings_.cascadeBlend;
+    if (virtualFrame_) {
+        block.virtualPages = virtual_->pagesUniform();
+        block.virtualPage = virtual_->pageUniform();
+    }
     if (!shadowBlock_) {
         shadowBlock_ =
             std::make_unique<engine::gl::Buffer>(sizeof(ShadowBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);

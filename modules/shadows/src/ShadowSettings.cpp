@@ -1,5 +1,6 @@
 #include <shadows/ShadowSettings.h>
 #include <shadows/ShadowSettingsSchema.h>
+#include <shadows/VirtualPages.h>
 
 #include <algorithm>
 
@@ -28,6 +29,19 @@ std::vector<std::string> ShadowSettings::validate() const {
     for (const SettingRow& row : settingsSchema()) {
         if (std::optional<std::string> problem = row.problem(*this)) {
             problems.push_back(std::move(*problem));
+        }
+    }
+    if (problems.empty() && mapAllocation == MapAllocation::Virtual) {
+        const ShadowPlan plan = ShadowPlan::resolve(*this);
+        const std::size_t tile = virtualTileBytes(plan, virtualPageSize);
+        if ((static_cast<std::size_t>(virtualBudgetMiB) << 20) < tile) {
+            problems.push_back("virtualBudgetMiB " + std::to_string(virtualBudgetMiB) +
+                               " holds no page: one page of this technique with its border takes " +
+                               std::to_string(tile) + " bytes");
+        }
+        if (plan.blursMoments) {
+            problems.push_back(
+                "momentBlurRadius must be 0 with mapAllocation virtual (pages are not blurred)");
         }
     }
     return problems;

@@ -68,6 +68,9 @@ bool chebyshevBound(const S& s) {
 bool jittered(const S& s) {
     return traitsOf(s.technique).jittered;
 }
+bool virtualMaps(const S& s) {
+    return s.mapAllocation == MapAllocation::Virtual;
+}
 bool cascaded(const S& s) {
     return s.cascadeCount != 1;
 }
@@ -213,6 +216,23 @@ const std::vector<SettingRow>& rows() {
          "over where visible boxes can be shadowed, cascades around the view frustum's slices). A view with "
          "no visible sample falls back to bounds, saying so once.",
          choice<DirectionalFit, &S::directionalFit>(), always, "--fit"},
+        {"mapAllocation", "", "map allocation",
+         "How directional lights' texels are allocated. fitted: whole maps of `resolution`² fitted to the "
+         "view. virtual: a clipmap of 16k² levels, each twice the radius of the last, whose pages are drawn "
+         "only where visible pixels ask for them, at the level whose texels are no larger than a pixel there "
+         "(the receiver's slope to the light included), in a pool of virtualBudgetMiB, cached while casters "
+         "and light stay put. Over budget, pages fall back to coarser levels and the stats say so. Spot and "
+         "point lights keep fitted maps.",
+         choice<MapAllocation, &S::mapAllocation>(), always, "--maps"},
+        {"virtualBudgetMiB", "MiB", "page budget",
+         "Memory of the virtual maps' page pool (every light's pages, their borders and the technique's "
+         "stored values); it must hold at least one page.",
+         IntSetting{&S::virtualBudgetMiB, [](const S&) { return fixed({.min = 1, .max = 4096}); }},
+         virtualMaps, "--page-budget"},
+        {"virtualPageSize", "texels", "page size", "Side of a virtual page.",
+         IntSetting{&S::virtualPageSize,
+                    [](const S&) { return fixed({.min = 32, .max = 512, .powerOfTwoRequired = true}); }},
+         virtualMaps, "--page-size"},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},
@@ -249,7 +269,9 @@ bool FloatLimits::contains(float value) const {
 }
 
 bool IntLimits::contains(int value) const {
-    return (zeroAllowed && value == 0) || (value >= min && value <= max && (value - min) % step == 0);
+    const bool powerOfTwo = value > 0 && (value & (value - 1)) == 0;
+    return (zeroAllowed && value == 0) ||
+           (value >= min && value <= max && (value - min) % step == 0 && (!powerOfTwoRequired || powerOfTwo));
 }
 
 std::vector<int> IntLimits::offered() const {
@@ -257,7 +279,8 @@ std::vector<int> IntLimits::offered() const {
     if (zeroAllowed) {
         values.push_back(0);
     }
-    for (int value = min; value <= max; value = powersOfTwo ? value * 2 : value + step) {
+    for (int value = min; value <= max;
+         value = powersOfTwo || powerOfTwoRequired ? value * 2 : value + step) {
         values.push_back(value);
     }
     return values;
@@ -267,6 +290,9 @@ std::string IntLimits::describe() const {
     std::string text = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
     if (step > 1) {
         text += " in steps of " + std::to_string(step);
+    }
+    if (powerOfTwoRequired) {
+        text += ", a power of two";
     }
     return zeroAllowed ? "0, or " + text : text;
 }

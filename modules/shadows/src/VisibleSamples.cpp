@@ -50,9 +50,7 @@ const engine::gl::Program& VisibleSamples::reduction(engine::ModuleHost& host, b
     return *program;
 }
 
-std::optional<VisibleSamples::Bounds>
-VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit,
-                        const glm::mat4& worldToLight, float weight, float blend) {
+void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit) {
     const glm::ivec2 size = glm::max(frame.target.size, glm::ivec2(1));
     if (!depth_ || size != size_) {
         size_ = size;
@@ -63,15 +61,12 @@ VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& fr
         framebuffer_->setDrawBuffers({GL_NONE});
         framebuffer_->check();
     }
-    if (!bounds_) {
-        bounds_.emplace(kBoundsWords * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
-    }
 
     // What the lighting pass will see: every mesh, both faces, depth only (the shadow pass's program without
     // a stored value).
     const glm::mat4 viewProjection = fit.projection * fit.view;
-    const engine::gl::Program& draw = host.programs().get(kSampleDepthProgram, 0);
-    draw.use();
+    const engine::gl::Program& program = host.programs().get(kSampleDepthProgram, 0);
+    program.use();
     framebuffer_->bind();
     glViewport(0, 0, size_.x, size_.y);
     glEnable(GL_DEPTH_TEST);
@@ -80,14 +75,24 @@ VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& fr
     glDisable(GL_CULL_FACE);
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
-    draw.set("uLightViewProjection", viewProjection);
+    program.set("uLightViewProjection", viewProjection);
     host.drawMeshes(frame.scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
-        draw.set("uModel", model);
+        program.set("uModel", model);
         return true;
     });
     glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
     glViewport(0, 0, frame.target.size.x, frame.target.size.y);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+std::optional<VisibleSamples::Bounds>
+VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit,
+                        const glm::mat4& worldToLight, float weight, float blend) {
+    draw(host, frame, fit);
+    if (!bounds_) {
+        bounds_.emplace(kBoundsWords * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    const glm::mat4 viewProjection = fit.projection * fit.view;
 
     // 8x8 invocations a group, each reducing a 4x4 block of texels (samples.comp).
     const glm::ivec2 groups = (size_ + glm::ivec2(31)) / 32;

@@ -36,6 +36,12 @@ public:
                                   const FitView& fit, const glm::mat4& worldToLight, float weight,
                                   float blend);
 
+    /// @brief Draws the view of `fit` over `frame.scene` into the sample depth image only (what measure does
+    /// first; virtual maps mark their pages from it). Leaves the frame's framebuffer and viewport bound.
+    void draw(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit);
+    /// @brief The sample depth image (GL_DEPTH_COMPONENT32F, the frame's size), 0 before the first draw.
+    [[nodiscard]] GLuint depthTexture() const { return depth_ ? depth_->id() : 0; }
+
     /// @brief The sample depth image of the last measure (window depths, rows from the bottom), for tests
     /// of the reduction against its CPU mirror.
     [[nodiscard]] std::vector<float> readDepth() const;

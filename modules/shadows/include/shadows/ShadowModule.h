@@ -4,6 +4,7 @@
 #include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettings.h>
 #include <shadows/TapPattern.h>
+#include <shadows/VirtualPages.h>
 
 #include <engine/Module.h>
 #include <engine/gl/Buffer.h>
@@ -22,14 +23,20 @@ struct LightMapsBlock;
 class ShadowSamplers;
 class JitterTexture;
 class VisibleSamples;
+class VirtualShadowMaps;
 
 /// @brief Resource and frame counters of the shadow module.
 struct ShadowStats {
     /// Shadow maps drawn in the last frame: one per shadow-casting spot or directional light with visible
     /// receivers, one per cascade and one per cube face that has visible receivers.
     int shadowMaps = 0;
-    /// GPU memory of the allocated shadow maps (depth plus any gradient target), bytes.
+    /// GPU memory of the allocated shadow maps (depth plus any gradient target), bytes; with virtual maps,
+    /// the page pool, the page tables and the request buffer too.
     std::size_t bytes = 0;
+    /// Whether the last frame's directional lights read virtual maps (ShadowSettings::mapAllocation).
+    bool virtualMaps = false;
+    /// The virtual maps' page counters in the last frame (zero without virtual maps).
+    VirtualPageStats pages;
 };
 
 /// @brief The shadow module: shadow maps for shadow-casting lights and the lighting-pass visibility of the
@@ -93,6 +100,8 @@ private:
     struct MapSlot {
         int lightIndex = -1;
         LightProjection projection;
+        /// Texels per side: the settings' resolution, or a virtual clipmap level's.
+        int resolution = 0;
     };
 
     void releaseResources();
@@ -104,6 +113,11 @@ private:
                              const FitView& fit, std::span<const Aabb> boxes, LightMapsBlock& maps);
     /// The slot of a fitted map of light `lightIndex`, -1 when it has nothing to draw or every slot is taken.
     int addSlot(int lightIndex, const LightProjection& projection);
+    /// Serves the frame's directional lights from virtual maps (marking, allocating, the page tables) and
+    /// adds their clipmap levels' slots; false, having added nothing, where the frame cannot use them (a spot
+    /// or point light casts too, or the view shows no surface), which it says once.
+    bool fitVirtualMaps(const engine::FrameContext& frame, const FitView& fit, std::span<const Aabb> boxes,
+                        const std::map<engine::EntityId, Aabb>& casters, std::vector<LightMapsBlock>& lights);
     /// Blurs the moments (ShadowPlan::blursMoments).
     void blurMoments();
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
@@ -128,7 +142,12 @@ private:
     std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
     std::unique_ptr<engine::gl::Buffer> shadowBlock_;
     std::optional<FitView> fitView_;
-    std::unique_ptr<VisibleSamples> samples_; // directional maps fitted to samples only
+    std::unique_ptr<VisibleSamples> samples_;    // directional maps fitted to samples only
+    std::unique_ptr<VirtualShadowMaps> virtual_; // mapAllocation virtual only
+    bool virtualFrame_ = false;                  // this frame reads the virtual maps' atlas
+    GLuint pageTableUnit_ = 0;
+    bool warnedVirtualFallback_ = false;
+    bool warnedPageBudget_ = false;
     bool warnedNoSamples_ = false;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;

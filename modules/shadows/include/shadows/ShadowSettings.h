@@ -38,6 +38,16 @@ enum class DirectionalFit {
     Bounds,
 };
 
+/// @brief How a directional light's shadow texels are allocated.
+enum class MapAllocation {
+    /// Whole maps of `resolution`² fitted to the view (one, or one per cascade).
+    Fitted,
+    /// A clipmap of virtual 16k² levels whose pages are drawn only where visible pixels ask for them, at the
+    /// level whose texels are no larger than a pixel there, in a pool of virtualBudgetMiB, cached across
+    /// frames (docs/SHADOWS.md, "Virtual maps"). Spot and point lights keep fitted maps.
+    Virtual,
+};
+
 /// @brief Form of the average-gradient computation for PcfGsmAverageGradient.
 enum class AverageGradientForm {
     LeastSquares,  ///< any pattern, precomputed inverse covariance
@@ -120,6 +130,12 @@ struct ShadowSettings {
     bool floorReceiverDepth = false;
     /// What directional maps are fitted to: the visible depth samples, or mesh bounds.
     DirectionalFit directionalFit = DirectionalFit::Samples;
+    /// How directional lights' texels are allocated: whole fitted maps, or virtual pages.
+    MapAllocation mapAllocation = MapAllocation::Fitted;
+    /// Memory of the virtual maps' page pool, all lights together, MiB.
+    int virtualBudgetMiB = 64;
+    /// Side of a virtual page, texels.
+    int virtualPageSize = 128;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
     /// Cascades of each directional light's map (1: one map over where visible receivers can be shadowed; 0:
@@ -178,6 +194,8 @@ template <>
 std::span<const EnumName<CasterFaces>> enumNames();
 template <>
 std::span<const EnumName<DirectionalFit>> enumNames();
+template <>
+std::span<const EnumName<MapAllocation>> enumNames();
 template <>
 std::span<const EnumName<AverageGradientForm>> enumNames();
 template <>

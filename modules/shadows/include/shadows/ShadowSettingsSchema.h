@@ -44,7 +44,8 @@ struct FloatSetting {
 };
 
 /// @brief The values an integer setting accepts: `min`, `min + step`, ... up to `max`, and 0 when
-/// `zeroAllowed`. `powersOfTwo` narrows what the sandbox offers (every value stays valid).
+/// `zeroAllowed`. `powersOfTwo` narrows what the sandbox offers (every value stays valid) unless
+/// `powerOfTwoRequired`.
 struct IntLimits {
     /// Lowest value accepted, besides 0 when `zeroAllowed`.
     int min;
@@ -56,6 +57,8 @@ struct IntLimits {
     bool zeroAllowed = false;
     /// Whether the sandbox offers only powers of two.
     bool powersOfTwo = false;
+    /// Whether only powers of two are accepted (and offered).
+    bool powerOfTwoRequired = false;
     /// Says which case of a setting-dependent range applies, e.g. "for a grid".
     std::string_view qualifier = {};
 

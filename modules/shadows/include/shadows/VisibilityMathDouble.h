@@ -24,6 +24,9 @@ using mat4 = glm::dmat4;
 inline double clamp(double x, float low, float high) {
     return glm::clamp(x, double(low), double(high));
 }
+inline int clamp(int x, int low, int high) {
+    return glm::clamp(x, low, high);
+}
 inline double max(double a, float b) {
     return glm::max(a, double(b));
 }

@@ -8,9 +8,11 @@ const int GS_SHADOW_LIGHT_NONE = 0;
 const int GS_SHADOW_LIGHT_SINGLE = 1;
 const int GS_SHADOW_LIGHT_CASCADES = 2;
 const int GS_SHADOW_LIGHT_CUBE = 3;
+const int GS_SHADOW_LIGHT_VIRTUAL = 4;
 
 struct GsShadowLightMaps {
-    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count
+    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count or clipmap levels, z: first level's slot, w: its
+                     // page-table layer
     ivec4 slots;     // map slot of the single map (x), of each cascade, or of cube faces 0-3; -1: none
     ivec4 faceSlots; // cube faces 4, 5 (xy)
     vec4 splitNear;  // cascades: view depth each starts at
@@ -43,5 +45,7 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     float gsShadowDepthBias;                    // depth units the comparison depth is lowered by
     float gsShadowCascadeBlend;                 // fraction of a cascade's span blended into the next
     float gsShadowDepthBiasFloor;               // the depth bias's arithmetic floor, orthographic depth units
+    ivec4 gsVirtualPages; // x pages per side of a level, y atlas tiles per row, z atlas side (texels)
+    vec4 gsVirtualPage;   // x page side, y tile side, z border (texels), w 1 / atlas side
 };
 

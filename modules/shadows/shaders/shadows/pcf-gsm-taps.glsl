@@ -6,7 +6,7 @@
 mat2 gsPcfGsmFetch(GsShadowLookup lookup, out float depths[GS_MAX_TAPS]) {
     mat2 rotation = gsShadowRotation();
     for (int i = 0; i < gsTapCount; ++i) {
-        depths[i] = gsShadowDepthAt(lookup.slot, lookup.texel + rotation * gsTapOffsets[i]);
+        depths[i] = gsShadowDepthAt(lookup, lookup.texel + rotation * gsTapOffsets[i]);
     }
     return rotation;
 }

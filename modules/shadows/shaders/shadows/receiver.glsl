@@ -38,7 +38,9 @@ uniform float gsTapFitRows[6 * GS_MAX_TAPS];
 
 // Where a receiver lands in one shadow map.
 struct GsShadowLookup {
-    int slot;            // the map (layer of gsShadowMaps)
+    int slot;            // the map (its projection in the block)
+    int layer;           // the layer of gsShadowMaps its texels are in (the slot's, or a virtual page's)
+    float inverseSize;   // texel coordinates -> texture coordinates of that layer
     vec2 coord;          // shadow texture coordinates
     vec2 texel;          // the coordinates in texels
     float depth;         // receiver depth in the map's [0,1] range
@@ -94,16 +96,18 @@ mat2 gsShadowRotation() {
 
 #ifdef GS_SHADOW_SAMPLER_COMPARE
 // The map's hardware comparison at `coord` (its sampler decides NEAREST or 2x2 LINEAR PCF).
-float gsShadowCompare(int slot, vec2 coord, float reference) {
-    return texture(gsShadowMaps, vec4(coord, float(slot), reference));
+float gsShadowCompare(GsShadowLookup lookup, vec2 coord, float reference) {
+    return texture(gsShadowMaps, vec4(coord, float(lookup.layer), reference));
 }
 #else
-float gsShadowDepthAt(int slot, vec2 texel) {
-    return texture(gsShadowMaps, vec3(texel * gsShadowTexel[slot].y, float(slot))).r;
+float gsShadowDepthAt(GsShadowLookup lookup, vec2 texel) {
+    return texture(gsShadowMaps, vec3(texel * lookup.inverseSize, float(lookup.layer))).r;
 }
 
 // The 2x2 depths around `coord` (textureGather order).
-vec4 gsShadowGather(int slot, vec2 coord) { return textureGather(gsShadowMaps, vec3(coord, float(slot))); }
+vec4 gsShadowGather(GsShadowLookup lookup, vec2 coord) {
+    return textureGather(gsShadowMaps, vec3(coord, float(lookup.layer)));
+}
 
 // Filtered moments under the lookup: bilinear at the one level the map has. The blur, where asked for, has
 // filtered them over its width; a mip level as wide as the lookup's footprint mixes a caster's moments into
@@ -112,7 +116,7 @@ vec4 gsShadowGather(int slot, vec2 coord) { return textureGather(gsShadowMaps, v
 // views, `msm` 30 in 3), uncapped the spheres' lit ground darkened 3.7e-4; at one texel, where no level but the
 // first is read, none (docs/SHADOWS.md, "No mip chain for the moments").
 vec4 gsShadowMoments(GsShadowLookup lookup) {
-    return textureLod(gsShadowMaps, vec3(lookup.coord, float(lookup.slot)), 0.0);
+    return textureLod(gsShadowMaps, vec3(lookup.coord, float(lookup.layer)), 0.0);
 }
 #endif
 
@@ -157,6 +161,17 @@ struct GsShadowFragment {
     vec3 dPdy;
 };
 
+#ifdef GS_SHADOW_LAYOUT_VIRTUAL
+// A directional light's virtual clipmap (ShadowModule, docs/SHADOWS.md "Virtual maps"): each level a slot of
+// the block, its pages' entries in layers of the page table, every resident page a tile of the atlas that
+// gsShadowMaps then is. While gsShadowMapVisibility reads a level, gsVirtualPageLayer is that level's layer;
+// when the receiver's page holds no texels of the level it returns -1 and names the level that does.
+uniform usampler2DArray gsShadowPageTable;
+int gsVirtualPageLayer = -1;
+int gsVirtualFirstSlot = 0;
+int gsVirtualNextLevel = 0;
+#endif
+
 // Visibility of the fragment in map `slot`; -1 (no map drawn) is lit.
 float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     if (slot < 0) {
@@ -164,6 +179,8 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     }
     GsShadowLookup lookup;
     lookup.slot = slot;
+    lookup.layer = slot;
+    lookup.inverseSize = gsShadowTexel[slot].y;
     // One texel's world size at the receiver: constant for orthographic maps, growing with the distance along
     // the axis (clip w, whose row is the matrix's last) for perspective ones. Biases are in these units, so one
     // value holds at any scene scale, map size and cascade.
@@ -197,6 +214,36 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     }
     vec3 coord = clip.xyz / clip.w;
 #endif
+    float layerSize = gsShadowTexel[slot].x;
+#ifdef GS_SHADOW_LAYOUT_VIRTUAL
+    if (gsVirtualPageLayer >= 0) {
+        // A clipmap level (gsShadowVirtualVisibility): read the texels of the page under the receiver where
+        // they live in the atlas, or name the coarser level that holds them.
+        vec2 window = coord.xy * gsShadowTexel[slot].x;
+        ivec2 page = ivec2(floor(window / gsVirtualPage.x));
+        if (any(lessThan(page, ivec2(0))) || any(greaterThanEqual(page, ivec2(gsVirtualPages.x)))) {
+            gsVirtualNextLevel = slot - gsVirtualFirstSlot + 1;
+            return -1.0;
+        }
+        uint entry = texelFetch(gsShadowPageTable, ivec3(page, gsVirtualPageLayer), 0).r;
+        if (entry == 0u) {
+            return 1.0; // nothing resident at any level here: the module warned that the budget fell short
+        }
+        int resident = int((entry >> 24) & 63u);
+        if (resident != slot - gsVirtualFirstSlot) {
+            gsVirtualNextLevel = resident;
+            return -1.0;
+        }
+        int tile = int(entry & 0xffffffu);
+        int tilesPerLayer = gsVirtualPages.y * gsVirtualPages.y;
+        ivec2 cell = ivec2(tile % gsVirtualPages.y, (tile % tilesPerLayer) / gsVirtualPages.y);
+        vec2 atlasTexel = vec2(cell) * gsVirtualPage.y + gsVirtualPage.z + (window - vec2(page) * gsVirtualPage.x);
+        lookup.layer = tile / tilesPerLayer;
+        lookup.inverseSize = gsVirtualPage.w;
+        layerSize = float(gsVirtualPages.z);
+        coord.xy = atlasTexel * gsVirtualPage.w;
+    } else
+#endif
     // Outside the map, or in a fitted directional map's lit border: no caster can shadow the receiver there,
     // and its kernel would read across the map's edge (a fit or central difference over the border's far
     // depth predicts taps far behind the receiver, which then look shadowed).
@@ -204,7 +251,7 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         return 1.0;
     }
     lookup.coord = coord.xy;
-    lookup.texel = coord.xy * gsShadowTexel[slot].x;
+    lookup.texel = coord.xy * layerSize;
     // The depth bias: format steps of the stored depth, but no less than the arithmetic floor, which is a
     // distance along the light's axis (a fraction of the map's depth range). A perspective map's depth changes
     // by near·far/w² per unit of that range at distance w: as a fixed depth offset the floor would span a
@@ -236,12 +283,12 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
 #endif
     lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
-    lookup.pointGradient = textureLod(gsShadowGradientMaps, vec3(lookup.coord, float(slot)), 0.0).rg;
+    lookup.pointGradient = textureLod(gsShadowGradientMaps, vec3(lookup.coord, float(lookup.layer)), 0.0).rg;
 #elif defined(GS_SHADOW_GRADIENT_CENTRAL)
     vec2 texel = lookup.texel;
     lookup.pointGradient =
-        0.5 * vec2(gsShadowDepthAt(slot, texel + vec2(1, 0)) - gsShadowDepthAt(slot, texel - vec2(1, 0)),
-                   gsShadowDepthAt(slot, texel + vec2(0, 1)) - gsShadowDepthAt(slot, texel - vec2(0, 1)));
+        0.5 * vec2(gsShadowDepthAt(lookup, texel + vec2(1, 0)) - gsShadowDepthAt(lookup, texel - vec2(1, 0)),
+                   gsShadowDepthAt(lookup, texel + vec2(0, 1)) - gsShadowDepthAt(lookup, texel - vec2(0, 1)));
 #elif defined(GS_SHADOW_GRADIENT_SCREEN)
     lookup.pointGradient = lookup.screenGradient;
 #endif
@@ -311,6 +358,31 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
         return visibility;
     }
 #endif
+#ifdef GS_SHADOW_LAYOUT_VIRTUAL
+    if (kind == GS_SHADOW_LIGHT_VIRTUAL) {
+        int levels = maps.kind.y;
+        gsVirtualFirstSlot = maps.kind.z;
+        // Start at the finest level whose window holds the receiver: the windows double in radius around the
+        // camera (up to a page off centre), so from the finest level's coordinates.
+        vec2 finest = (gsShadowMatrix[gsVirtualFirstSlot] * vec4(worldPosition, 1.0)).xy - 0.5;
+        float reach = max(abs(finest.x), abs(finest.y)) / (0.5 - 1.0 / float(gsVirtualPages.x));
+        int level = reach > 1.0 ? int(ceil(log2(reach))) : 0;
+        // Each try lands on the finest resident page over the receiver, or names its level: two at most but
+        // where the receiver's offsets cross into a page another level holds.
+        for (int attempt = 0; attempt < levels && level < levels; ++attempt) {
+            gsVirtualPageLayer = maps.kind.w + level;
+            float visibility = gsShadowMapVisibility(gsVirtualFirstSlot + level, fragment);
+            if (visibility >= 0.0) {
+                gsDebugMap = gsDebugMap < 0 ? level : gsDebugMap;
+                gsVirtualPageLayer = -1;
+                return visibility;
+            }
+            level = max(gsVirtualNextLevel, level + 1);
+        }
+        gsVirtualPageLayer = -1;
+        return 1.0;
+    }
+#endif
 #ifdef GS_SHADOW_LAYOUT_SINGLE
     if (kind == GS_SHADOW_LIGHT_SINGLE) {
 #ifdef GS_SHADOW_ONE_MAP
@@ -354,6 +426,6 @@ void gsShadowDebug(inout vec3 color) {
     // Cascade 0..3 or cube face 0..5 as a hue, darkened in shadow; grey where no map was read.
     const vec3 palette[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),
                                     vec3(1.0, 0.9, 0.2), vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
-    color = (gsDebugMap < 0 ? vec3(0.5) : palette[gsDebugMap]) * (0.35 + 0.65 * gsDebugVisibility);
+    color = (gsDebugMap < 0 ? vec3(0.5) : palette[gsDebugMap % 6]) * (0.35 + 0.65 * gsDebugVisibility);
 #endif
 }

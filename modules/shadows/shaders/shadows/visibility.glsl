@@ -445,3 +445,28 @@ float gsTexelFootprintPixels(vec2 texelPerPixelX, vec2 texelPerPixelY) {
     }
     return min(largest / (determinant * scale), GS_FOOTPRINT_UNBOUNDED);
 }
+
+// Virtual maps: the absolute clipmap level a receiver asks for, level k having texels 2^k world units wide. A
+// texel's footprint grows with its size, m = 2^k * unitFootprint (gsTexelFootprintPixels of a texel one world
+// unit wide), so the coarsest level with m <= 1 is floor(-log2(unitFootprint)): the receiver's slope to the
+// light and to the camera both count, which a level from distance alone (Unreal's) leaves out. Near grazing
+// light m grows without bound; no texel meets it there, so the slope may ask for at most
+// GS_VIRTUAL_SLOPE_OCTAVES levels finer than the pixel's own world size `pixelSize` does. A receiver whose
+// footprint is unknown (NaN, zero, unbounded) asks by its pixel size alone. Clamped to [base, base + count - 1].
+const int GS_VIRTUAL_SLOPE_OCTAVES = 3;
+int gsVirtualLevel(float unitFootprint, float pixelSize, int base, int count) {
+    float byPixel = pixelSize > 0.0f && pixelSize < 3.0e38f ? floor(log2(pixelSize)) : float(base);
+    float level = byPixel;
+    if (unitFootprint > 0.0f && unitFootprint < GS_FOOTPRINT_UNBOUNDED) {
+        level = max(floor(-log2(unitFootprint)), byPixel - float(GS_VIRTUAL_SLOPE_OCTAVES));
+    }
+    return clamp(int(level), base, base + count - 1);
+}
+
+// The pages a lookup at window texel `texel` reads when its offsets and kernel reach `reach` texels: from
+// `low` to `high` inclusive, clamped to the window of `pagesPerSide` pages of `pageSize` texels.
+void gsVirtualPageSpan(vec2 texel, float reach, float pageSize, int pagesPerSide, GS_OUT(ivec2) low,
+                       GS_OUT(ivec2) high) {
+    low = clamp(ivec2(floor((texel - reach) / pageSize)), ivec2(0), ivec2(pagesPerSide - 1));
+    high = clamp(ivec2(floor((texel + reach) / pageSize)), ivec2(0), ivec2(pagesPerSide - 1));
+}

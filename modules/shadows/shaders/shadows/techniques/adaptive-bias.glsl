@@ -7,7 +7,6 @@
 // 118 of 126 Defaults views without this, 125 with it: docs/SHADOWS.md, "Never deeper than the fragment").
 #if defined(GS_SHADOW_ADAPTIVE) || defined(GS_SHADOW_ADAPTIVE_PCF)
 GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
-    int slot = lookup.slot;
 #ifdef GS_SHADOW_ADAPTIVE_PCF
     mat2 rotation = gsShadowRotation();
     int count = gsTapCount;
@@ -23,7 +22,7 @@ GsShadowSample gsShadowSample_AdaptiveBias(GsShadowLookup lookup) {
 #endif
         float reference =
             gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, lookup.tangentGradient, true);
-        sum += gsShadowCompare(slot, centre * gsShadowTexel[slot].y, gsShadowReference(reference));
+        sum += gsShadowCompare(lookup, centre * lookup.inverseSize, gsShadowReference(reference));
     }
     return GsShadowSample(sum / float(max(count, 1)), 1.0, 0.0, lookup.tangentGradient, false);
 }

@@ -8,7 +8,7 @@ uniform sampler3D gsShadowJitter; // two stratified offsets per texel
 
 float gsJitteredTap(GsShadowLookup lookup, vec2 offset) {
     float reference = gsReceiverPlaneTapDepth(lookup.depth, offset, lookup.tangentGradient, true);
-    return gsShadowCompare(lookup.slot, (lookup.texel + offset) * gsShadowTexel[lookup.slot].y,
+    return gsShadowCompare(lookup, (lookup.texel + offset) * lookup.inverseSize,
                            gsShadowReference(reference));
 }
 

@@ -9,8 +9,8 @@ GsShadowSample gsShadowSample_Pcf(GsShadowLookup lookup) {
     for (int i = 0; i < gsTapCount; ++i) {
         vec2 offset = rotation * gsTapOffsets[i];
         float reference = gsReceiverPlaneTapDepth(lookup.depth, offset, lookup.tangentGradient, true);
-        vec2 tap = (lookup.texel + offset) * gsShadowTexel[lookup.slot].y;
-        sum += gsShadowCompare(lookup.slot, tap, gsShadowReference(reference));
+        vec2 tap = (lookup.texel + offset) * lookup.inverseSize;
+        sum += gsShadowCompare(lookup, tap, gsShadowReference(reference));
     }
     return gsShadowResult(sum / float(max(gsTapCount, 1)), 1.0, lookup);
 }

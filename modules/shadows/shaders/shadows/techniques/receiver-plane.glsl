@@ -2,7 +2,6 @@
 // footprint, or per PCF tap (GS_SHADOW_RPB_PER_TAP).
 #ifdef GS_SHADOW_RECEIVER_PLANE
 GsShadowSample gsShadowSample_ReceiverPlane(GsShadowLookup lookup) {
-    int slot = lookup.slot;
     vec2 texel = lookup.texel;
     float depth = lookup.depth;
     vec2 screenGradient = lookup.screenGradient;
@@ -13,7 +12,7 @@ GsShadowSample gsShadowSample_ReceiverPlane(GsShadowLookup lookup) {
     for (int i = 0; i < gsTapCount; ++i) {
         vec2 centre = floor(texel + rotation * gsTapOffsets[i]) + 0.5;
         float tapDepth = gsReceiverPlaneTapDepth(depth, centre - texel, screenGradient, clampBias);
-        sum += gsShadowCompare(slot, centre * gsShadowTexel[slot].y, gsShadowReference(tapDepth));
+        sum += gsShadowCompare(lookup, centre * lookup.inverseSize, gsShadowReference(tapDepth));
     }
     return GsShadowSample(sum / float(max(gsTapCount, 1)), 1.0, 0.0, screenGradient, false);
 #else
@@ -22,8 +21,8 @@ GsShadowSample gsShadowSample_ReceiverPlane(GsShadowLookup lookup) {
     // texel from any selection boundary, so the two agree on every implementation's sub-texel precision.
     vec2 footprint = floor(texel - 0.5);
     vec2 weights = texel - 0.5 - footprint;
-    vec2 gatherAt = (footprint + 1.0) * gsShadowTexel[slot].y;
-    vec4 gathered = gsShadowGather(slot, gatherAt);
+    vec2 gatherAt = (footprint + 1.0) * lookup.inverseSize;
+    vec4 gathered = gsShadowGather(lookup, gatherAt);
     // Gather order x (-,+), y (+,+), z (+,-), w (-,-): distances from the pixel to each texel centre.
     vec2 toCentre0 = vec2(-weights.x, 1.0 - weights.y);
     vec2 toCentre1 = vec2(1.0 - weights.x, 1.0 - weights.y);

@@ -2,7 +2,7 @@
 // PCF, the casters' polygon offset and the lookup's normal offset happen before.
 #ifdef GS_SHADOW_SINGLE_COMPARE
 GsShadowSample gsShadowSample_SingleCompare(GsShadowLookup lookup) {
-    float visibility = gsShadowCompare(lookup.slot, lookup.coord, gsShadowReference(lookup.depth));
+    float visibility = gsShadowCompare(lookup, lookup.coord, gsShadowReference(lookup.depth));
     return gsShadowResult(visibility, visibility, lookup);
 }
 #define gsShadowSample gsShadowSample_SingleCompare

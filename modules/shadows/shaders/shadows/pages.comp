@@ -1,0 +1,110 @@
+#version 450 core
+// Page marking of the virtual maps: every visible pixel of the view's depth image asks for the pages, at the
+// clipmap level whose texels span at most a pixel there (gsVirtualLevel), that its lookup and kernel read
+// (gsVirtualPageSpan). The requests are bits, one per page of each request level's window, read back by the
+// module (ShadowModule::markPages), which also mirrors the level choice on the CPU in its tests.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#define GS_OUT(T) out T
+#include "visibility.glsl"
+
+const int GS_REQUEST_LEVELS = 64;
+
+layout(binding = 0) uniform sampler2D uDepth;
+uniform ivec2 uSize;
+uniform mat4 uClipToWorld;
+uniform mat4 uWorldToLight;
+uniform vec3 uToLight;
+uniform vec3 uCamera;
+uniform int uLevelBase;
+uniform int uPageSize;
+uniform int uPagesPerSide;
+uniform float uReach;
+// First page of each request level's window (ClipmapGeometry::windowOrigin), from the CPU so both agree.
+uniform ivec2 uWindowOrigin[GS_REQUEST_LEVELS];
+
+layout(std430, binding = 0) buffer GsPageRequests {
+    uint requests[];
+};
+
+bool gsSurfaceAt(ivec2 texel, out vec3 position) {
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, uSize))) {
+        return false;
+    }
+    float depth = texelFetch(uDepth, texel, 0).r;
+    if (!(depth < 1.0 && depth >= 0.0)) { // 1 is the cleared far plane: no surface
+        return false;
+    }
+    vec4 world = uClipToWorld * vec4((vec2(texel) + 0.5) / vec2(uSize) * 2.0 - 1.0, 2.0 * depth - 1.0, 1.0);
+    position = world.xyz / world.w;
+    return true;
+}
+
+// The screen derivative of the position along `step`: the shorter one-sided difference, so a pixel beside a
+// silhouette measures its own surface, not the jump to the one behind.
+bool gsDerivative(ivec2 texel, ivec2 step, vec3 centre, out vec3 derivative) {
+    vec3 forward;
+    vec3 backward;
+    bool hasForward = gsSurfaceAt(texel + step, forward);
+    bool hasBackward = gsSurfaceAt(texel - step, backward);
+    if (!hasForward && !hasBackward) {
+        return false;
+    }
+    vec3 ahead = forward - centre;
+    vec3 behind = centre - backward;
+    derivative = !hasBackward || (hasForward && dot(ahead, ahead) <= dot(behind, behind)) ? ahead : behind;
+    return true;
+}
+
+uint gsLastMarked = 0xffffffffu;
+
+void gsMark(int levelIndex, ivec2 page) {
+    uint bit = uint(levelIndex) * uint(uPagesPerSide * uPagesPerSide) + uint(page.y * uPagesPerSide + page.x);
+    if (bit != gsLastMarked) { // neighbouring pixels ask for the same page: one atomic for a run of them
+        gsLastMarked = bit;
+        atomicOr(requests[bit >> 5], 1u << (bit & 31u));
+    }
+}
+
+const int GS_BLOCK = 4;
+
+void main() {
+    ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * GS_BLOCK;
+    mat3 toLight = mat3(uWorldToLight);
+    for (int dy = 0; dy < GS_BLOCK; ++dy) {
+        for (int dx = 0; dx < GS_BLOCK; ++dx) {
+            ivec2 texel = origin + ivec2(dx, dy);
+            vec3 position;
+            vec3 dPdx;
+            vec3 dPdy;
+            if (!gsSurfaceAt(texel, position) || !gsDerivative(texel, ivec2(1, 0), position, dPdx) ||
+                !gsDerivative(texel, ivec2(0, 1), position, dPdy)) {
+                continue;
+            }
+            // The facet, turned towards the camera: lit where it faces the light too.
+            vec3 normal = cross(dPdx, dPdy);
+            normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
+            bool lit = dot(normal, uToLight) > 0.0;
+            float unitFootprint = lit ? gsTexelFootprintPixels((toLight * dPdx).xy, (toLight * dPdy).xy) : 0.0;
+            float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
+            int level = gsVirtualLevel(unitFootprint, pixelSize, uLevelBase, GS_REQUEST_LEVELS) - uLevelBase;
+            vec2 light = (uWorldToLight * vec4(position, 1.0)).xy;
+            // The finest level at or above the one asked for whose window holds the lookup and its reach.
+            float windowTexels = float(uPageSize * uPagesPerSide);
+            for (; level < GS_REQUEST_LEVELS; ++level) {
+                vec2 window = light * exp2(-float(uLevelBase + level)) - vec2(uWindowOrigin[level] * uPageSize);
+                if (all(greaterThanEqual(window, vec2(uReach))) && all(lessThan(window, vec2(windowTexels - uReach)))) {
+                    ivec2 low;
+                    ivec2 high;
+                    gsVirtualPageSpan(window, uReach, float(uPageSize), uPagesPerSide, low, high);
+                    for (int y = low.y; y <= high.y; ++y) {
+                        for (int x = low.x; x <= high.x; ++x) {
+                            gsMark(level, ivec2(x, y));
+                        }
+                    }
+                    break;
+                }
+            }
+        }
+    }
+}

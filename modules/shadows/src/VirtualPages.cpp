@@ -1,0 +1,281 @@
+#include <shadows/VirtualPages.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shadows {
+
+namespace {
+
+/// Light-space [left, right] × [bottom, top] and z range [low, high] (z towards the light) → shadow texture
+/// space, computed in double: at fine levels far from the light-space origin the bounds are large and close,
+/// and a float ortho loses the fraction of a texel the pages' borders must agree on.
+glm::dmat4 lightToShadow(glm::dvec2 low, glm::dvec2 high, glm::dvec2 depth) {
+    glm::dmat4 m(1.0);
+    m[0][0] = 1.0 / (high.x - low.x);
+    m[1][1] = 1.0 / (high.y - low.y);
+    m[3][0] = -low.x / (high.x - low.x);
+    m[3][1] = -low.y / (high.y - low.y);
+    // Depth 0 at the top (nearest the light), 1 at the bottom, as glm::ortho(…, -top, -bottom) then [0,1].
+    m[2][2] = -1.0 / (depth.y - depth.x);
+    m[3][2] = depth.y / (depth.y - depth.x);
+    return m;
+}
+
+} // namespace
+
+int virtualPageBorderTexels(const ShadowPlan& plan) {
+    // The kernel's reach, a texel for bilinear and central-difference neighbours, and one for the receiver's
+    // offsets, which move the lookup before its page is read.
+    return static_cast<int>(std::ceil(plan.kernelReachTexels)) + 2;
+}
+
+std::size_t virtualTileBytes(const ShadowPlan& plan, int pageSize) {
+    const auto side = static_cast<std::size_t>(pageSize + 2 * virtualPageBorderTexels(plan));
+    const std::size_t perTexel = plan.depthBytesPerTexel + (plan.storesGradient ? 8 : 0) +
+                                 (plan.momentsFormat != 0 ? plan.momentBytesPerTexel : 0);
+    return side * side * perTexel;
+}
+
+std::size_t PageKeyHash::operator()(const PageKey& key) const {
+    std::uint64_t h = static_cast<std::uint32_t>(key.light);
+    h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.level);
+    h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.page.x);
+    h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.page.y);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+}
+
+double ClipmapGeometry::texelSize(int level) {
+    return std::ldexp(1.0, level);
+}
+
+glm::ivec2 ClipmapGeometry::windowOrigin(int level) const {
+    const double pageWorld = texelSize(level) * pageSize;
+    const glm::dvec2 page = glm::floor(glm::dvec2(camera) / pageWorld);
+    return glm::ivec2(page) - glm::ivec2(pagesPerSide() / 2);
+}
+
+LightProjection ClipmapGeometry::levelProjection(int level) const {
+    const double pageWorld = texelSize(level) * pageSize;
+    const glm::dvec2 low = glm::dvec2(windowOrigin(level)) * pageWorld;
+    return projectionOver(low, low + glm::dvec2(pageWorld * pagesPerSide()), level);
+}
+
+glm::vec4 ClipmapGeometry::pageRect(int level, glm::ivec2 page, int borderTexels) const {
+    const double texel = texelSize(level);
+    const double pageWorld = texel * pageSize;
+    const glm::dvec2 low = glm::dvec2(page) * pageWorld - texel * borderTexels;
+    const glm::dvec2 high = glm::dvec2(page + 1) * pageWorld + texel * borderTexels;
+    return {low.x, low.y, high.x, high.y};
+}
+
+LightProjection ClipmapGeometry::pageProjection(int level, glm::ivec2 page, int borderTexels) const {
+    const double texel = texelSize(level);
+    const double pageWorld = texel * pageSize;
+    const glm::dvec2 low = glm::dvec2(page) * pageWorld - texel * borderTexels;
+    return projectionOver(low, glm::dvec2(page + 1) * pageWorld + texel * borderTexels, level);
+}
+
+LightProjection ClipmapGeometry::projectionOver(glm::dvec2 low, glm::dvec2 high, int level) const {
+    LightProjection result;
+    result.view = lightView;
+    const glm::dmat4 toShadow = lightToShadow(low, high, glm::dvec2(depth));
+    // Clip space from texture space: x, y, z of [0,1] → [-1,1].
+    const glm::dmat4 textureToClip(glm::dvec4(2, 0, 0, 0), glm::dvec4(0, 2, 0, 0), glm::dvec4(0, 0, 2, 0),
+                                   glm::dvec4(-1, -1, -1, 1));
+    result.projection = glm::mat4(textureToClip * toShadow);
+    result.worldToShadow = glm::mat4(toShadow * glm::dmat4(lightView));
+    result.texelScale = static_cast<float>(texelSize(level));
+    result.valid = true;
+    return result;
+}
+
+glm::vec2 depthRangeFor(const glm::mat4& lightView, std::span<const Aabb> boxes) {
+    glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+    for (const Aabb& box : boxes) {
+        if (box.empty()) {
+            continue;
+        }
+        const Aabb light = box.transformed(lightView);
+        range.x = std::min(range.x, light.min.z);
+        range.y = std::max(range.y, light.max.z);
+    }
+    if (!(range.y >= range.x) || !std::isfinite(range.x) || !std::isfinite(range.y)) {
+        return {0.0f, 1.0f};
+    }
+    const float span = std::max(range.y - range.x, 1e-6f * std::max(std::abs(range.x), std::abs(range.y)));
+    const float step = std::ldexp(1.0f, static_cast<int>(std::ceil(std::log2(std::max(span, 1e-30f)))) - 3);
+    return {std::floor(range.x / step) * step - step, std::ceil(range.y / step) * step + step};
+}
+
+int levelForTexelSize(double texelSize, int base) {
+    if (!(texelSize > 0.0)) {
+        return base;
+    }
+    const double level = std::floor(std::log2(std::min(texelSize, 1e300)));
+    return static_cast<int>(
+        std::clamp(level, static_cast<double>(base), static_cast<double>(base + kRequestLevels - 1)));
+}
+
+int requestLevelBase(float sceneExtent) {
+    const float extent = std::isfinite(sceneExtent) && sceneExtent > 0.0f ? sceneExtent : 1.0f;
+    return static_cast<int>(std::floor(std::log2(extent))) - 48;
+}
+
+std::uint32_t pageTableEntry(int levelIndex, int tile) {
+    return kPageResidentBit | (static_cast<std::uint32_t>(levelIndex & 63) << 24) |
+           (static_cast<std::uint32_t>(tile) & kPageTileMask);
+}
+
+PagePool::PagePool(int tiles) : tiles_(static_cast<std::size_t>(std::max(tiles, 0))) {
+    free_.reserve(tiles_.size());
+    for (int tile = static_cast<int>(tiles_.size()) - 1; tile >= 0; --tile) {
+        free_.push_back(tile);
+    }
+}
+
+void PagePool::release(int tile) {
+    Tile& record = tiles_[static_cast<std::size_t>(tile)];
+    if (!record.used) {
+        return;
+    }
+    residents_.erase(record.key);
+    record.used = false;
+    free_.push_back(tile);
+}
+
+PagePool::FrameResult PagePool::request(std::span<const PageKey> requests, std::uint64_t frame) {
+    FrameResult result;
+    // Tiles no request of this frame has touched yet, least recently used first: the eviction order.
+    std::vector<int> evictable;
+    std::size_t nextEvictable = 0;
+    bool evictableSorted = false;
+    for (const PageKey& key : requests) {
+        if (const auto found = residents_.find(key); found != residents_.end()) {
+            Tile& record = tiles_[static_cast<std::size_t>(found->second)];
+            if (record.lastUsed != frame) {
+                record.lastUsed = frame;
+                ++result.cached;
+            }
+            continue;
+        }
+        int tile = -1;
+        if (!free_.empty()) {
+            tile = free_.back();
+            free_.pop_back();
+        } else {
+            if (!evictableSorted) {
+                for (int t = 0; t < static_cast<int>(tiles_.size()); ++t) {
+                    if (tiles_[static_cast<std::size_t>(t)].lastUsed != frame) {
+                        evictable.push_back(t);
+                    }
+                }
+                std::sort(evictable.begin(), evictable.end(), [&](int a, int b) {
+                    return tiles_[static_cast<std::size_t>(a)].lastUsed <
+                           tiles_[static_cast<std::size_t>(b)].lastUsed;
+                });
+                evictableSorted = true;
+            }
+            // Skip tiles touched since the list was made (a later request hit them).
+            while (nextEvictable < evictable.size() &&
+                   tiles_[static_cast<std::size_t>(evictable[nextEvictable])].lastUsed == frame) {
+                ++nextEvictable;
+            }
+            if (nextEvictable == evictable.size()) {
+                ++result.refused;
+                continue;
+            }
+            tile = evictable[nextEvictable++];
+            release(tile);
+            free_.pop_back(); // release pushed it
+        }
+        Tile& record = tiles_[static_cast<std::size_t>(tile)];
+        record = {key, frame, true};
+        residents_[key] = tile;
+        result.render.emplace_back(tile, key);
+    }
+    return result;
+}
+
+int PagePool::invalidateLight(int light) {
+    int dropped = 0;
+    for (int tile = 0; tile < static_cast<int>(tiles_.size()); ++tile) {
+        const Tile& record = tiles_[static_cast<std::size_t>(tile)];
+        if (record.used && record.key.light == light) {
+            release(tile);
+            ++dropped;
+        }
+    }
+    return dropped;
+}
+
+int PagePool::invalidate(int light, const ClipmapGeometry& geometry, glm::vec4 rect, int borderTexels) {
+    int dropped = 0;
+    for (int tile = 0; tile < static_cast<int>(tiles_.size()); ++tile) {
+        const Tile& record = tiles_[static_cast<std::size_t>(tile)];
+        if (!record.used || record.key.light != light) {
+            continue;
+        }
+        const glm::vec4 page = geometry.pageRect(record.key.level, record.key.page, borderTexels);
+        if (page.x <= rect.z && rect.x <= page.z && page.y <= rect.w && rect.y <= page.w) {
+            release(tile);
+            ++dropped;
+        }
+    }
+    return dropped;
+}
+
+int PagePool::tileOf(const PageKey& key) const {
+    const auto found = residents_.find(key);
+    return found == residents_.end() ? -1 : found->second;
+}
+
+std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, const ClipmapGeometry& geometry) {
+    const int side = geometry.pagesPerSide();
+    const auto layerSize = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+    std::vector<std::uint32_t> table(layerSize * kClipmapLevels, 0u);
+    std::vector<glm::ivec2> origins(kClipmapLevels);
+    for (int index = 0; index < kClipmapLevels; ++index) {
+        origins[static_cast<std::size_t>(index)] = geometry.windowOrigin(geometry.finestLevel + index);
+    }
+    pool.forEachResident([&](const PageKey& key, int tile) {
+        const int index = key.level - geometry.finestLevel;
+        if (key.light != light || index < 0 || index >= kClipmapLevels) {
+            return;
+        }
+        const glm::ivec2 local = key.page - origins[static_cast<std::size_t>(index)];
+        if (glm::any(glm::lessThan(local, glm::ivec2(0))) ||
+            glm::any(glm::greaterThanEqual(local, glm::ivec2(side)))) {
+            return;
+        }
+        table[static_cast<std::size_t>(index) * layerSize +
+              static_cast<std::size_t>(local.y * side + local.x)] = pageTableEntry(index, tile);
+    });
+    // Coarse to fine: a page with no texels of its own takes its parent's entry (the parent page of absolute
+    // page p is floor(p / 2): the grids are anchored at the origin, so each page lies inside one parent).
+    for (int index = kClipmapLevels - 2; index >= 0; --index) {
+        const glm::ivec2 origin = origins[static_cast<std::size_t>(index)];
+        const glm::ivec2 parentOrigin = origins[static_cast<std::size_t>(index + 1)];
+        std::uint32_t* layer = table.data() + static_cast<std::size_t>(index) * layerSize;
+        const std::uint32_t* parentLayer = layer + layerSize;
+        for (int y = 0; y < side; ++y) {
+            for (int x = 0; x < side; ++x) {
+                std::uint32_t& entry = layer[static_cast<std::size_t>(y * side + x)];
+                if (entry != 0u) {
+                    continue;
+                }
+                // >> 1 floors negative pages too (C++20 defines it as arithmetic).
+                const glm::ivec2 absolute = origin + glm::ivec2(x, y);
+                const glm::ivec2 parent = glm::ivec2(absolute.x >> 1, absolute.y >> 1) - parentOrigin;
+                if (glm::all(glm::greaterThanEqual(parent, glm::ivec2(0))) &&
+                    glm::all(glm::lessThan(parent, glm::ivec2(side)))) {
+                    entry = parentLayer[static_cast<std::size_t>(parent.y * side + parent.x)];
+                }
+            }
+        }
+    }
+    return table;
+}
+
+} // namespace shadows

@@ -1,0 +1,199 @@
+// Virtual shadow maps on the GPU: they agree with a whole map for every technique, draw no page in a static
+// frame, redraw only a moved caster's pages (and its old shadow goes), fall back to coarser levels over
+// budget, and leave spot and point lights to fitted maps.
+#include "../engine/GLTestContext.h"
+
+#include <content/GltfLoader.h>
+#include <engine/Engine.h>
+#include <engine/Image.h>
+#include <engine/RenderTarget.h>
+#include <shadows/ShadowModule.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace shadows;
+
+namespace {
+
+content::LoadedScene loadVirtualScene(const std::string& name) {
+    content::SceneLoadOptions options;
+    options.subdivisionLevel = 1;
+    return content::GltfLoader::load(std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".gltf"),
+                                     options);
+}
+
+/// An engine with the shadow module drawing `scene` frame after frame into one target.
+struct VirtualRig {
+    VirtualRig(content::LoadedScene& loaded, const ShadowSettings& settings, glm::ivec2 size = {160, 120})
+        : scene(loaded), target(size) {
+        auto owned = std::make_unique<ShadowModule>(settings);
+        module = owned.get();
+        engine.addModule(std::move(owned));
+    }
+    engine::Image frame() {
+        engine.renderFrame(scene.scene, *scene.scene.firstCamera(), target);
+        return target.readPixels();
+    }
+
+    content::LoadedScene& scene;
+    engine::Engine engine;
+    engine::RenderTarget target;
+    ShadowModule* module = nullptr;
+};
+
+ShadowSettings virtualSettings(ShadowTechnique technique = ShadowTechnique::SlopeScaledBias) {
+    ShadowSettings settings;
+    settings.technique = technique;
+    settings.mapAllocation = MapAllocation::Virtual;
+    settings.debugView = ShadowDebugView::Visibility;
+    return settings;
+}
+
+/// Pixels (of the red channel) whose visibility differs by more than a quarter.
+std::size_t differing(const engine::Image& a, const engine::Image& b) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); i += 4) {
+        count += std::abs(int(a.pixels[i]) - int(b.pixels[i])) > 64;
+    }
+    return count;
+}
+
+std::size_t shadowed(const engine::Image& image) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
+        count += image.pixels[i] < 128;
+    }
+    return count;
+}
+
+struct AgreementCase {
+    std::string name;
+    ShadowTechnique technique;
+};
+
+class VirtualShadowMapsAgree : public ::testing::TestWithParam<AgreementCase> {};
+
+TEST_P(VirtualShadowMapsAgree, WithAWholeMap) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    ShadowSettings fitted = virtualSettings(GetParam().technique);
+    fitted.mapAllocation = MapAllocation::Fitted;
+    VirtualRig whole(loaded, fitted);
+    VirtualRig paged(loaded, virtualSettings(GetParam().technique));
+    const engine::Image reference = whole.frame();
+    const engine::Image image = paged.frame();
+    EXPECT_TRUE(paged.module->stats().virtualMaps);
+    EXPECT_GT(paged.module->stats().pages.rendered, 0);
+    // Both show the knob's shadow, and they differ at most along its edge, where the virtual map's finer
+    // texels place it differently (160x120: an edge pixel is ~0.6 % of the image).
+    EXPECT_GT(shadowed(reference), reference.pixels.size() / 4 / 20);
+    EXPECT_LE(differing(image, reference), reference.pixels.size() / 4 / 200)
+        << shadowed(image) << " shadowed pixels against " << shadowed(reference);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryFamily, VirtualShadowMapsAgree,
+    // Not `hard`: the naive comparison's acne is a pattern of the texel grid, which the pages change.
+    ::testing::Values(AgreementCase{"slope_scaled", ShadowTechnique::SlopeScaledBias},
+                      AgreementCase{"hw_pcf", ShadowTechnique::HardwarePcf},
+                      AgreementCase{"pcf", ShadowTechnique::Pcf}, AgreementCase{"gsm", ShadowTechnique::Gsm},
+                      AgreementCase{"pcf_gsm_average", ShadowTechnique::PcfGsmAverageGradient},
+                      AgreementCase{"receiver_plane", ShadowTechnique::ReceiverPlaneBias},
+                      AgreementCase{"adaptive_bias", ShadowTechnique::AdaptiveBias},
+                      AgreementCase{"pcf_jittered", ShadowTechnique::JitteredPcf},
+                      AgreementCase{"vsm", ShadowTechnique::Vsm},
+                      AgreementCase{"evsm", ShadowTechnique::Evsm},
+                      AgreementCase{"msm", ShadowTechnique::Msm}),
+    [](const ::testing::TestParamInfo<AgreementCase>& value) { return value.param.name; });
+
+TEST(VirtualShadowMaps, StaticFrameDrawsNoPage) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    VirtualRig rig(loaded, virtualSettings());
+    const engine::Image first = rig.frame();
+    const VirtualPageStats cold = rig.module->stats().pages;
+    EXPECT_GT(cold.rendered, 0);
+    EXPECT_EQ(cold.rendered, cold.requested);
+    const engine::Image second = rig.frame();
+    const VirtualPageStats warm = rig.module->stats().pages;
+    EXPECT_EQ(warm.rendered, 0);
+    EXPECT_EQ(warm.cached, warm.requested);
+    EXPECT_EQ(warm.requested, cold.requested);
+    EXPECT_EQ(differing(first, second), 0u);
+}
+
+TEST(VirtualShadowMaps, MovedCasterRedrawsItsPagesAndNoOthers) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    VirtualRig rig(loaded, virtualSettings());
+    rig.frame();
+    const engine::Image before = rig.frame();
+    const int requested = rig.module->stats().pages.requested;
+    const std::optional<engine::EntityId> knob = loaded.scene.find("knob");
+    ASSERT_TRUE(knob);
+    loaded.scene.entity(*knob).transform.translation.x += 0.3f;
+    const engine::Image moved = rig.frame();
+    const VirtualPageStats pages = rig.module->stats().pages;
+    EXPECT_GT(pages.invalidated, 0);
+    EXPECT_GT(pages.rendered, 0);
+    EXPECT_LT(pages.rendered, requested) << "pages beside the knob and its shadow stay cached";
+    EXPECT_EQ(pages.cached + pages.rendered, pages.requested);
+    EXPECT_GT(differing(before, moved), 0u);
+    // The old shadow is gone: the warm frame matches a cold one of the moved scene.
+    VirtualRig cold(loaded, virtualSettings());
+    EXPECT_EQ(differing(moved, cold.frame()), 0u);
+}
+
+TEST(VirtualShadowMaps, OverBudgetFallsBackToCoarserLevels) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    VirtualRig full(loaded, virtualSettings());
+    ShadowSettings small = virtualSettings();
+    small.virtualBudgetMiB = 1;
+    VirtualRig tight(loaded, small);
+    const engine::Image reference = full.frame();
+    const engine::Image image = tight.frame();
+    const ShadowStats stats = tight.module->stats();
+    EXPECT_GT(stats.pages.coarsened, 0);
+    EXPECT_EQ(stats.pages.refused, 0);
+    EXPECT_LE(stats.pages.resident, stats.pages.poolPages);
+    // Still the knob's shadow: coarser texels move its edge, they do not lose it.
+    EXPECT_LE(differing(image, reference), reference.pixels.size() / 4 / 50);
+    EXPECT_GT(shadowed(image), shadowed(reference) * 9 / 10);
+}
+
+TEST(VirtualShadowMaps, PoolStaysInTheBudget) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    for (const ShadowTechnique technique : {ShadowTechnique::SlopeScaledBias, ShadowTechnique::Evsm}) {
+        ShadowSettings settings = virtualSettings(technique);
+        settings.virtualBudgetMiB = 16;
+        VirtualRig rig(loaded, settings);
+        rig.frame();
+        const ShadowStats stats = rig.module->stats();
+        // The atlas within the budget; page tables (16 levels of 128² words) and requests (64 levels of bits)
+        // beside it.
+        const std::size_t tables = 128u * 128u * 4u * kClipmapLevels + 128u * 128u / 8u * kRequestLevels;
+        EXPECT_LE(stats.bytes, (16u << 20) + tables) << toString(technique);
+        EXPECT_GT(stats.bytes, (8u << 20)) << toString(technique);
+    }
+}
+
+TEST(VirtualShadowMaps, SpotAndPointLightsKeepFittedMaps) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("room");
+    ShadowSettings settings = virtualSettings();
+    settings.debugView = ShadowDebugView::None;
+    VirtualRig rig(loaded, settings);
+    rig.frame();
+    EXPECT_FALSE(rig.module->stats().virtualMaps);
+    EXPECT_GT(rig.module->stats().shadowMaps, 0);
+}
+
+} // namespace
