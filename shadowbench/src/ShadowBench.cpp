@@ -217,6 +217,12 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     engine.renderFrame(scene.scene_, scene.camera_, shaded);
     result.shadowBytes = module.stats().bytes;
     result.shadowMaps = module.stats().shadowMaps;
+    result.virtualMaps = module.stats().virtualMaps;
+    if (result.virtualMaps) {
+        result.coldPages = module.stats().pages;
+        engine.renderFrame(scene.scene_, scene.camera_, shaded);
+        result.warmPages = module.stats().pages;
+    }
     std::filesystem::path folder = options_.imageFolder / scene.name();
     result.shadedImage = folder / (config.label + ".png");
     result.shaded = shaded.readPixels();
@@ -293,8 +299,23 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
     const std::vector<shadows::LightProjection> maps = module.lightProjections(scene.light_.index);
     Accuracy accuracy = measureVisibility(scene, std::move(visibility),
                                           receiverTexelSizes(scene.positions_, scene.surfaces_, maps));
-    accuracy.footprints =
-        texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps, settings.resolution);
+    if (settings.mapAllocation == shadows::MapAllocation::Virtual) {
+        // Each pixel's clipmap level is the finest resident page's over it: read which one it used.
+        engine::Engine slotEngine;
+        shadows::ShadowSettings slotView = settings;
+        slotView.debugView = shadows::ShadowDebugView::Slot;
+        slotEngine.addModule(std::make_unique<shadows::ShadowModule>(slotView));
+        const auto read = renderFloat(slotEngine, scene.scene_, scene.camera_, options_.size);
+        std::vector<float> slots(read.size());
+        for (std::size_t i = 0; i < read.size(); ++i) {
+            slots[i] = read[i].x;
+        }
+        accuracy.footprints = texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps,
+                                              shadows::kVirtualResolution, slots);
+    } else {
+        accuracy.footprints =
+            texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps, settings.resolution);
+    }
     accuracy.metrics.density = texelDensity(accuracy.classes, accuracy.truth, accuracy.footprints);
     return accuracy;
 }
@@ -473,7 +494,8 @@ std::string_view toString(BandUnit unit) {
 
 std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
                                    std::span<const Surface> surfaces,
-                                   std::span<const shadows::LightProjection> maps, int resolution) {
+                                   std::span<const shadows::LightProjection> maps, int resolution,
+                                   std::span<const float> slots) {
     std::vector<float> footprints(positions.size(), -1.0f);
     const auto index = [&](int x, int y) {
         return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
@@ -484,11 +506,21 @@ std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> p
             if (surfaces[i] != Surface::Receiver) {
                 continue;
             }
-            const auto finest = finestMap(maps, positions[i]);
-            if (!finest) {
-                continue;
+            std::size_t map = 0;
+            if (slots.empty()) {
+                const auto finest = finestMap(maps, positions[i]);
+                if (!finest) {
+                    continue;
+                }
+                map = finest->first;
+            } else {
+                const float slot = slots[i];
+                if (!(slot >= 0.0f && slot < static_cast<float>(maps.size()))) {
+                    continue;
+                }
+                map = static_cast<std::size_t>(slot);
             }
-            const glm::mat4& toShadow = maps[finest->first].worldToShadow;
+            const glm::mat4& toShadow = maps[map].worldToShadow;
             const auto texelAt = [&](std::size_t j) -> std::optional<glm::vec2> {
                 const glm::vec4 s = toShadow * glm::vec4(positions[j], 1.0f);
                 if (surfaces[j] == Surface::None || !(s.w > 0.0f)) {
@@ -633,7 +665,16 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                : nlohmann::json({{"pixels", m.density.pixels},
                                                                  {"atMostOnePixel", m.density.atMostOnePixel},
                                                                  {"median", m.density.median},
-                                                                 {"p99", m.density.percentile99}})},
+                                                                 {"p99", m.density.percentile99},
+                                                                 {"p999", m.density.percentile999}})},
+             {"pages", !r.virtualMaps ? nlohmann::json()
+                                      : nlohmann::json({{"coldRequested", r.coldPages.requested},
+                                                        {"coldRendered", r.coldPages.rendered},
+                                                        {"coldTexels", r.coldPages.texelsRendered},
+                                                        {"coarsened", r.coldPages.coarsened},
+                                                        {"refused", r.coldPages.refused},
+                                                        {"poolPages", r.coldPages.poolPages},
+                                                        {"warmRendered", r.warmPages.rendered}})},
              {"shadowPassMs",
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
              {"lightingPassMs",

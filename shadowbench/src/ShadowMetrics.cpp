@@ -279,6 +279,7 @@ TexelDensity texelDensity(std::span<const PixelClass> classes, std::span<const f
     };
     density.median = nearestRank(0.5);
     density.percentile99 = nearestRank(0.99);
+    density.percentile999 = nearestRank(0.999);
     return density;
 }
 

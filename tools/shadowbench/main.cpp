@@ -337,7 +337,16 @@ int main(int argc, char** argv) {
                           << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px (p95 "
                           << m.edges.trueToRendered.percentile95 << "/" << m.edges.renderedToTrue.percentile95
                           << "), m<=1 " << m.density.atMostOnePixel << " (p99 " << m.density.percentile99
-                          << " px), "
+                          << " px, p99.9 " << m.density.percentile999 << "), "
+                          << (results.back().virtualMaps
+                                  ? "pages " + std::to_string(results.back().coldPages.rendered) + " cold (" +
+                                        std::to_string(
+                                            static_cast<double>(results.back().coldPages.texelsRendered) /
+                                            static_cast<double>(std::max<std::size_t>(m.density.pixels, 1))) +
+                                        "x lit px), " + std::to_string(results.back().warmPages.rendered) +
+                                        " warm, " + std::to_string(results.back().coldPages.coarsened) +
+                                        " coarsened, "
+                                  : std::string())
                           << (results.back().shimmer >= 0.0
                                   ? "shimmer " + std::to_string(results.back().shimmer) + ", "
                                   : std::string())

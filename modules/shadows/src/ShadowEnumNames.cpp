@@ -79,7 +79,7 @@ std::span<const EnumName<ReceiverPlaneKernel>> enumNames() {
 
 template <>
 std::span<const EnumName<ShadowDebugView>> enumNames() {
-    static constexpr std::array<EnumName<ShadowDebugView>, 9> names{
+    static constexpr std::array<EnumName<ShadowDebugView>, 11> names{
         {{ShadowDebugView::None, "none"},
          {ShadowDebugView::TexelCheckerboard, "texels"},
          {ShadowDebugView::GradientMagnitude, "gradient"},
@@ -88,7 +88,9 @@ std::span<const EnumName<ShadowDebugView>> enumNames() {
          {ShadowDebugView::ShadowMap, "shadow-map"},
          {ShadowDebugView::FullKernel, "kernel"},
          {ShadowDebugView::Maps, "maps"},
-         {ShadowDebugView::Density, "density"}}};
+         {ShadowDebugView::Density, "density"},
+         {ShadowDebugView::Pages, "pages"},
+         {ShadowDebugView::Slot, "slot"}}};
     return names;
 }
 

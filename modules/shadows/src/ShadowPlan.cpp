@@ -62,7 +62,9 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
                                                   "GS_SHADOW_DEBUG_MAP",
                                                   "GS_SHADOW_DEBUG_KERNEL",
                                                   "GS_SHADOW_DEBUG_MAPS",
-                                                  "GS_SHADOW_DEBUG_DENSITY"};
+                                                  "GS_SHADOW_DEBUG_DENSITY",
+                                                  "GS_SHADOW_DEBUG_PAGES",
+                                                  "GS_SHADOW_DEBUG_SLOT"};
     if (settings.debugView != ShadowDebugView::None) {
         defines.push_back(kDebugDefines[static_cast<std::size_t>(settings.debugView)]);
     }

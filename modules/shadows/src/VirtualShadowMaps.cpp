@@ -259,7 +259,16 @@ VirtualShadowMaps::update(engine::ModuleHost& host, const FitView& fit,
             pageTableLights_ = static_cast<int>(lights_.size());
         }
         for (const Light& light : lights_) {
-            const std::vector<std::uint32_t> table = buildPageTable(pool_, light.index, light.geometry);
+            std::vector<std::uint32_t> table = buildPageTable(pool_, light.index, light.geometry);
+            std::vector<bool> drawn(static_cast<std::size_t>(pool_.tiles()), false);
+            for (const auto& [tile, key] : toRender_) {
+                drawn[static_cast<std::size_t>(tile)] = true;
+            }
+            for (std::uint32_t& entry : table) {
+                if (entry != 0u && drawn[entry & kPageTileMask]) {
+                    entry |= kPageDrawnBit;
+                }
+            }
             glTextureSubImage3D(pageTable_->id(), 0, 0, 0, light.pageLayer, side, side, kClipmapLevels,
                                 GL_RED_INTEGER, GL_UNSIGNED_INT, table.data());
         }

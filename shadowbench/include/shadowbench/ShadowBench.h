@@ -12,6 +12,7 @@
 #include <engine/RenderTarget.h>
 #include <shadows/LightFrustum.h>
 #include <shadows/ShadowSettings.h>
+#include <shadows/VirtualPages.h>
 
 #include <filesystem>
 #include <memory>
@@ -53,6 +54,11 @@ struct BenchResult {
     std::size_t shadowBytes = 0;
     /// Shadow maps drawn (cascades and cube faces count one each); 0 for peer rows.
     int shadowMaps = 0;
+    /// Virtual maps (ShadowSettings::mapAllocation): the pages of the cold first frame, and those of the
+    /// same view drawn again (a static camera: nothing new to draw).
+    bool virtualMaps = false;
+    shadows::VirtualPageStats coldPages;
+    shadows::VirtualPageStats warmPages;
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
     /// candidates); negative for every other configuration.
     double fullKernelFraction = -1.0;
@@ -261,10 +267,13 @@ private:
 /// @brief Lloyd et al.'s m at each receiver pixel (`surfaces`): the largest extent in pixels of one texel of
 /// the finest of `maps` (each `resolution`² texels) holding it, from the texel coordinates' differences to
 /// its neighbours on the same surface (the nearer one in texels along each axis, as a derivative that does
-/// not cross a silhouette); -1 where no map holds it or it has no such neighbour on an axis.
+/// not cross a silhouette); -1 where no map holds it or it has no such neighbour on an axis. Given `slots`
+/// (the map each pixel read, ShadowDebugView::Slot; -1 none), each pixel's own map instead of the finest: a
+/// virtual map's level is the finest resident page's, which only the lighting pass knows.
 std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
                                    std::span<const Surface> surfaces,
-                                   std::span<const shadows::LightProjection> maps, int resolution);
+                                   std::span<const shadows::LightProjection> maps, int resolution,
+                                   std::span<const float> slots = {});
 
 /// @brief Texture reads of the shadow maps per lookup with `settings`: the kernel's taps (jittered: every
 /// tap, the most an early out leaves), plus the reads of the point gradient (stored: 1; central differences:

@@ -54,6 +54,7 @@ struct TexelDensity {
     double atMostOnePixel = 0.0;
     double median = 0.0;
     double percentile99 = 0.0;
+    double percentile999 = 0.0;
 };
 
 /// @brief One technique's errors against ground truth over one image (see computeMetrics for definitions).

@@ -74,7 +74,13 @@ enum class ShadowDebugView {
     Maps,
     /// Lloyd's m, the largest extent of one shadow texel in screen pixels: green m <= 1, yellow <= 2, red
     /// > 2.
-    Density
+    Density,
+    /// Virtual maps: the clipmap level each pixel reads as colour, page borders dark, pages drawn this frame
+    /// bright; grey where no virtual page was read.
+    Pages,
+    /// The map slot each pixel's lookup read, as a value (-1 where none): for measurements that need to know
+    /// which map, or which virtual level, a pixel used (float targets).
+    Slot,
 };
 
 /// @brief Every setting of the shadow module. Plain data; ShadowModule::setSettings validates and applies it

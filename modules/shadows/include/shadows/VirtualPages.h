@@ -112,6 +112,8 @@ int requestLevelBase(float sceneExtent);
 /// bits 0–23.
 std::uint32_t pageTableEntry(int levelIndex, int tile);
 inline constexpr std::uint32_t kPageResidentBit = 0x80000000u;
+/// Set by the module in entries whose page was drawn this frame (the pages debug view).
+inline constexpr std::uint32_t kPageDrawnBit = 0x40000000u;
 inline constexpr std::uint32_t kPageTileMask = 0x00ffffffu;
 
 /// @brief The physical pages: a fixed number of atlas tiles shared by every light, each holding one

@@ -15,6 +15,8 @@
 #define GS_SHADOW_DEBUG_VIEW
 #elif defined(GS_SHADOW_DEBUG_MAPS) || defined(GS_SHADOW_DEBUG_DENSITY)
 #define GS_SHADOW_DEBUG_VIEW
+#elif defined(GS_SHADOW_DEBUG_PAGES) || defined(GS_SHADOW_DEBUG_SLOT)
+#define GS_SHADOW_DEBUG_VIEW
 #endif
 
 // GS_SHADOW_KEEP_PERSPECTIVE exists for the test that shows the orthographic variant changes no image: the
@@ -70,6 +72,10 @@ float gsDebugBias = 0.0;
 float gsDebugStored = 1.0;
 vec2 gsDebugTexel = vec2(0.0);
 float gsDebugDensity = -1.0; // Lloyd's m (gsTexelFootprintPixels); -1 where no map was read
+int gsDebugSlot = -1;
+int gsDebugPageLevel = -1;     // virtual maps: the clipmap level read
+bool gsDebugPageBorder = false; // within a texel of its page's edge
+bool gsDebugPageDrawn = false;  // the page was drawn this frame
 bool gsDebugSet = false;
 bool gsDebugFullKernel = false;
 
@@ -235,6 +241,14 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
             return -1.0;
         }
         int tile = int(entry & 0xffffffu);
+#ifdef GS_SHADOW_DEBUG_PAGES
+        if (!gsDebugSet) {
+            vec2 inPage = window - vec2(page) * gsVirtualPage.x;
+            gsDebugPageLevel = resident;
+            gsDebugPageBorder = any(lessThan(min(inPage, gsVirtualPage.x - inPage), vec2(1.0)));
+            gsDebugPageDrawn = (entry & 0x40000000u) != 0u;
+        }
+#endif
         int tilesPerLayer = gsVirtualPages.y * gsVirtualPages.y;
         ivec2 cell = ivec2(tile % gsVirtualPages.y, (tile % tilesPerLayer) / gsVirtualPages.y);
         vec2 atlasTexel = vec2(cell) * gsVirtualPage.y + gsVirtualPage.z + (window - vec2(page) * gsVirtualPage.x);
@@ -297,6 +311,7 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     gsDebugFullKernel = result.fullKernel;
     if (!gsDebugSet) {
         gsDebugSet = true;
+        gsDebugSlot = slot;
 #ifdef GS_SHADOW_DEBUG_DENSITY
         vec3 texelDx = gsShadowDerivative(m, clip, fragment.dPdx) * gsShadowTexel[slot].x;
         vec3 texelDy = gsShadowDerivative(m, clip, fragment.dPdy) * gsShadowTexel[slot].x;
@@ -366,9 +381,16 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
         // camera (up to a page off centre), so from the finest level's coordinates.
         vec2 finest = (gsShadowMatrix[gsVirtualFirstSlot] * vec4(worldPosition, 1.0)).xy - 0.5;
         float reach = max(abs(finest.x), abs(finest.y)) / (0.5 - 1.0 / float(gsVirtualPages.x));
-        int level = reach > 1.0 ? int(ceil(log2(reach))) : 0;
-        // Each try lands on the finest resident page over the receiver, or names its level: two at most but
-        // where the receiver's offsets cross into a page another level holds.
+        int level = min(reach > 1.0 ? int(ceil(log2(reach))) : 0, levels - 1);
+        // That level's entry under the receiver names the finest resident level over it: go there at once
+        // rather than through a whole lookup that would only name it.
+        vec2 window = (gsShadowMatrix[gsVirtualFirstSlot + level] * vec4(worldPosition, 1.0)).xy *
+                      gsShadowTexel[gsVirtualFirstSlot + level].x;
+        ivec2 page = clamp(ivec2(floor(window / gsVirtualPage.x)), ivec2(0), ivec2(gsVirtualPages.x - 1));
+        uint entry = texelFetch(gsShadowPageTable, ivec3(page, maps.kind.w + level), 0).r;
+        level = entry != 0u ? int((entry >> 24) & 63u) : level;
+        // Each try lands on the finest resident page over the receiver, or names its level: one but where the
+        // receiver's offsets cross into a page another level holds.
         for (int attempt = 0; attempt < levels && level < levels; ++attempt) {
             gsVirtualPageLayer = maps.kind.w + level;
             float visibility = gsShadowMapVisibility(gsVirtualFirstSlot + level, fragment);
@@ -422,6 +444,14 @@ void gsShadowDebug(inout vec3 color) {
                    : gsDebugDensity <= 2.0 ? vec3(1.0, 0.9, 0.15)
                                            : vec3(1.0, 0.2, 0.15);
     color = density * (0.35 + 0.65 * gsDebugVisibility);
+#elif defined(GS_SHADOW_DEBUG_SLOT)
+    color = vec3(float(gsDebugSlot));
+#elif defined(GS_SHADOW_DEBUG_PAGES)
+    const vec3 levels[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),
+                                   vec3(1.0, 0.9, 0.2), vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
+    color = gsDebugPageLevel < 0 ? vec3(0.5) : levels[gsDebugPageLevel % 6] * (gsDebugPageDrawn ? 1.0 : 0.6);
+    color *= gsDebugPageBorder ? 0.25 : 1.0;
+    color *= 0.35 + 0.65 * gsDebugVisibility;
 #elif defined(GS_SHADOW_DEBUG_MAPS)
     // Cascade 0..3 or cube face 0..5 as a hue, darkened in shadow; grey where no map was read.
     const vec3 palette[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),
