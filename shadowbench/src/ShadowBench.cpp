@@ -258,7 +258,45 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     if (options_.pathFrames > 0) {
         result.pathShimmer = measurePathShimmer(scene, config.settings);
     }
+    if (options_.walkFrames > 0 && result.virtualMaps) {
+        measureWalk(scene, config.settings, result);
+    }
     return result;
+}
+
+void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSettings& settings,
+                              BenchResult& result) const {
+    constexpr float kStepPerFrame = 1.5f / 30.0f;
+    engine::Scene moving = scene.scene_;
+    moving.setParent(scene.camera_, engine::kNoEntity);
+    const glm::mat4 start = scene.scene_.worldMatrix(scene.camera_);
+    const glm::vec3 scale(glm::length(glm::vec3(start[0])), glm::length(glm::vec3(start[1])),
+                          glm::length(glm::vec3(start[2])));
+    engine::Transform pose;
+    pose.rotation = glm::quat_cast(glm::mat3(glm::vec3(start[0]) / scale.x, glm::vec3(start[1]) / scale.y,
+                                             glm::vec3(start[2]) / scale.z));
+    pose.scale = scale;
+    glm::vec3 forward = -glm::vec3(start[2]);
+    forward.y = 0.0f;
+    forward = glm::length(forward) > 1e-6f ? glm::normalize(forward) : glm::vec3(0.0f, 0.0f, -1.0f);
+    engine::Engine engine;
+    auto& module = static_cast<shadows::ShadowModule&>(
+        engine.addModule(std::make_unique<shadows::ShadowModule>(settings)));
+    engine::RenderTarget target(options_.size);
+    double sum = 0.0;
+    double largest = 0.0;
+    for (int frame = 0; frame <= options_.walkFrames; ++frame) {
+        pose.translation = glm::vec3(start[3]) + forward * (kStepPerFrame * static_cast<float>(frame));
+        moving.entity(scene.camera_).transform = pose;
+        engine.renderFrame(moving, scene.camera_, target);
+        if (frame > 0) {
+            const auto texels = static_cast<double>(module.stats().pages.texelsRendered);
+            sum += texels;
+            largest = std::max(largest, texels);
+        }
+    }
+    result.walkTexelsPerFrame = sum / static_cast<double>(options_.walkFrames);
+    result.walkTexelsPerFrameMax = largest;
 }
 
 ShadowBench::PassTimes ShadowBench::passTimes(engine::Engine& engine, const BenchScene& scene,
@@ -674,7 +712,9 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                         {"coarsened", r.coldPages.coarsened},
                                                         {"refused", r.coldPages.refused},
                                                         {"poolPages", r.coldPages.poolPages},
-                                                        {"warmRendered", r.warmPages.rendered}})},
+                                                        {"warmRendered", r.warmPages.rendered},
+                                                        {"walkTexelsPerFrame", r.walkTexelsPerFrame},
+                                                        {"walkTexelsPerFrameMax", r.walkTexelsPerFrameMax}})},
              {"shadowPassMs",
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
              {"lightingPassMs",

@@ -44,6 +44,8 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --shimmer-path N      also measure shimmer along a camera path: the camera moves and turns a little
                         over N frames, the maps fitted to each; the fraction of receiver pixels,
                         followed by reprojection, whose visibility flips while the truth's does not
+  --walk N              also measure virtual maps while the camera walks forward, level with the ground,
+                        1.5 units/s at 30 frames/s, for N frames: texels drawn per frame after the first
   --defaults            each technique once, at its defaults (ignores --taps, --radius, --resolutions,
                         --formats); rows are labelled with the technique's name
   --light-sweep AZ:EL   point each scene's shadow-casting light from every azimuth x elevation (degrees,
@@ -176,6 +178,8 @@ Options parse(int argc, char** argv) {
             options.bench.frames = cli::integerIn("--frames", value(), 1, 1000);
         } else if (arg == "--shimmer") {
             options.bench.shimmerFrames = cli::integerIn("--shimmer", value(), 1, 1000);
+        } else if (arg == "--walk") {
+            options.bench.walkFrames = cli::integerIn("--walk", value(), 1, 1000);
         } else if (arg == "--shimmer-path") {
             options.bench.pathFrames = cli::integerIn("--shimmer-path", value(), 1, 1000);
         } else if (arg == "--defaults") {
@@ -286,6 +290,24 @@ engine::Image sideBySide(const std::vector<engine::Image>& images) {
     return sheet;
 }
 
+/// The virtual maps' pages of a result for the progress line: drawn cold, and per frame of the walk, as
+/// multiples of the lit receiver pixels; empty without virtual maps.
+std::string pagesText(const shadowbench::BenchResult& result) {
+    if (!result.virtualMaps) {
+        return {};
+    }
+    const double lit = static_cast<double>(std::max<std::size_t>(result.metrics.density.pixels, 1));
+    std::ostringstream text;
+    text << std::setprecision(3) << "pages " << result.coldPages.rendered << " cold ("
+         << static_cast<double>(result.coldPages.texelsRendered) / lit << "x lit px), "
+         << result.warmPages.rendered << " warm, " << result.coldPages.coarsened << " coarsened, ";
+    if (result.walkTexelsPerFrame >= 0.0) {
+        text << "walk " << result.walkTexelsPerFrame / lit << "x lit px/frame (max "
+             << result.walkTexelsPerFrameMax / lit << "), ";
+    }
+    return text.str();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -337,16 +359,7 @@ int main(int argc, char** argv) {
                           << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px (p95 "
                           << m.edges.trueToRendered.percentile95 << "/" << m.edges.renderedToTrue.percentile95
                           << "), m<=1 " << m.density.atMostOnePixel << " (p99 " << m.density.percentile99
-                          << " px, p99.9 " << m.density.percentile999 << "), "
-                          << (results.back().virtualMaps
-                                  ? "pages " + std::to_string(results.back().coldPages.rendered) + " cold (" +
-                                        std::to_string(
-                                            static_cast<double>(results.back().coldPages.texelsRendered) /
-                                            static_cast<double>(std::max<std::size_t>(m.density.pixels, 1))) +
-                                        "x lit px), " + std::to_string(results.back().warmPages.rendered) +
-                                        " warm, " + std::to_string(results.back().coldPages.coarsened) +
-                                        " coarsened, "
-                                  : std::string())
+                          << " px, p99.9 " << m.density.percentile999 << "), " << pagesText(results.back())
                           << (results.back().shimmer >= 0.0
                                   ? "shimmer " + std::to_string(results.back().shimmer) + ", "
                                   : std::string())
