@@ -146,6 +146,15 @@ done
     --out "$work/cost-model"
 /usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
 
+# 11. Virtual maps: the default technique with whole fitted maps and with virtual maps, timed, with its pages cold
+#     and while the camera walks, on the large views, the knob and real models, osgShadow's VDSM beside it where
+#     the peer has the scene; then the apron under suns down to 3°, accuracy only.
+"$bench" --scene apron-merged --scene apron --scene terrain-low --scene terrain --scene knob --scene cylinder-engine \
+    --scene fzk-haus --scene suzanne --techniques default --resolutions 2048 --config "virtual:mapAllocation=virtual" \
+    --frames 5 --walk 30 --peer "$work/osg" --out "$work/virtual"
+"$bench" --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 --techniques default --resolutions 2048 \
+    --config "virtual:mapAllocation=virtual" --accuracy-only --out "$work/virtual-suns"
+
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
 echo "wrote docs/RESULTS.md"

@@ -348,6 +348,16 @@ void ControlPanel::drawTimings(const Session& session, const FrameReport& last) 
             ImGui::Text("%c %-18s shadow pass %6.2f ms   lighting %6.2f ms   maps %.1f MiB",
                         side == 0 ? 'A' : 'B', name.c_str(), smoothed_[side][0], smoothed_[side][1],
                         static_cast<double>(sides[side]->shadows.bytes) / (1024.0 * 1024.0));
+            if (const shadows::ShadowStats& stats = sides[side]->shadows; stats.virtualMaps) {
+                const shadows::VirtualPageStats& pages = stats.pages;
+                ImGui::Text("  pages: %d requested, %d drawn, %d cached, %d of %d resident%s",
+                            pages.requested, pages.rendered, pages.cached, pages.resident, pages.poolPages,
+                            pages.coarsened + pages.refused > 0 ? "  OVER BUDGET" : "");
+                if (pages.coarsened + pages.refused > 0) {
+                    ImGui::Text("  %d requests at coarser levels, %d without texels (lit)", pages.coarsened,
+                                pages.refused);
+                }
+            }
         }
         if (const auto method = session.passTiming()) {
             const std::string described(engine::PassTimer::describe(*method));

@@ -18,7 +18,14 @@ namespace {
 void printSide(const char* label, const shadows::ShadowSettings& settings, const SideStats& stats) {
     std::cout << "  " << label << ' ' << shadows::toString(settings.technique) << ": shadow pass "
               << stats.frame.prePassMilliseconds << " ms, lighting " << stats.frame.lightingMilliseconds
-              << " ms, " << stats.shadows.shadowMaps << " shadow map(s)\n";
+              << " ms, " << stats.shadows.shadowMaps << " shadow map(s)";
+    if (stats.shadows.virtualMaps) {
+        const shadows::VirtualPageStats& pages = stats.shadows.pages;
+        std::cout << ", pages " << pages.requested << " requested, " << pages.rendered << " drawn, "
+                  << pages.cached << " cached, " << pages.coarsened << " coarsened, " << pages.refused
+                  << " refused";
+    }
+    std::cout << '\n';
 }
 
 } // namespace

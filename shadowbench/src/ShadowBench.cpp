@@ -345,9 +345,14 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
         slotEngine.addModule(std::make_unique<shadows::ShadowModule>(slotView));
         const auto read = renderFloat(slotEngine, scene.scene_, scene.camera_, options_.size);
         std::vector<float> slots(read.size());
+        std::vector<float> pageEdges(read.size());
         for (std::size_t i = 0; i < read.size(); ++i) {
             slots[i] = read[i].x;
+            pageEdges[i] = read[i].y;
         }
+        accuracy.metrics.seams = seamErrors(
+            accuracy.classes, accuracy.truth, accuracy.visibility, pageEdges,
+            static_cast<float>(shadows::virtualPageBorderTexels(shadows::ShadowPlan::resolve(settings))));
         accuracy.footprints = texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps,
                                               shadows::kVirtualResolution, slots);
     } else {
@@ -667,6 +672,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["band"] = {{"width", options.bandWidth}, {"unit", std::string(toString(options.bandUnit))}};
     document["shimmerFrames"] = options.shimmerFrames;
     document["pathFrames"] = options.pathFrames;
+    document["walkFrames"] = options.walkFrames;
     document["groundTruth"] = options.softSamplesPerAxis > 0 ? "soft" : "hard";
     document["defaultTechnique"] = std::string(shadows::toString(shadows::ShadowSettings{}.technique));
     nlohmann::json list = nlohmann::json::array();
@@ -705,6 +711,12 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                                  {"median", m.density.median},
                                                                  {"p99", m.density.percentile99},
                                                                  {"p999", m.density.percentile999}})},
+             {"seams", m.seams.pixels + m.seams.interiorPixels == 0
+                           ? nlohmann::json()
+                           : nlohmann::json({{"pixels", m.seams.pixels},
+                                             {"errorRate", m.seams.errorRate},
+                                             {"interiorPixels", m.seams.interiorPixels},
+                                             {"interiorErrorRate", m.seams.interiorErrorRate}})},
              {"pages", !r.virtualMaps ? nlohmann::json()
                                       : nlohmann::json({{"coldRequested", r.coldPages.requested},
                                                         {"coldRendered", r.coldPages.rendered},

@@ -252,6 +252,34 @@ std::vector<PixelClass> classifyByScreenBand(glm::ivec2 size, std::span<const fl
     return classes;
 }
 
+SeamErrors seamErrors(std::span<const PixelClass> classes, std::span<const float> truth,
+                      std::span<const float> visibility, std::span<const float> pageEdges,
+                      float reachTexels) {
+    SeamErrors seams;
+    std::size_t seamErrors = 0;
+    std::size_t interiorErrors = 0;
+    for (std::size_t i = 0; i < classes.size(); ++i) {
+        if ((classes[i] != PixelClass::Lit && classes[i] != PixelClass::Shadowed) ||
+            !(pageEdges[i] >= 0.0f)) {
+            continue;
+        }
+        const bool wrong = std::abs(visibility[i] - truth[i]) > 0.5f;
+        if (pageEdges[i] < reachTexels) {
+            ++seams.pixels;
+            seamErrors += wrong;
+        } else {
+            ++seams.interiorPixels;
+            interiorErrors += wrong;
+        }
+    }
+    const auto rate = [](std::size_t errors, std::size_t pixels) {
+        return pixels ? static_cast<double>(errors) / static_cast<double>(pixels) : 0.0;
+    };
+    seams.errorRate = rate(seamErrors, seams.pixels);
+    seams.interiorErrorRate = rate(interiorErrors, seams.interiorPixels);
+    return seams;
+}
+
 TexelDensity texelDensity(std::span<const PixelClass> classes, std::span<const float> truth,
                           std::span<const float> footprints) {
     std::vector<float> values;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -75,6 +76,8 @@ std::size_t shadowed(const engine::Image& image) {
 struct AgreementCase {
     std::string name;
     ShadowTechnique technique;
+    /// The PCF pattern's radius, texels (a wide kernel straddles pages more often).
+    float pcfRadius = ShadowSettings{}.pcfRadius;
 };
 
 class VirtualShadowMapsAgree : public ::testing::TestWithParam<AgreementCase> {};
@@ -108,6 +111,67 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"adaptive_bias", ShadowTechnique::AdaptiveBias},
                       AgreementCase{"pcf_jittered", ShadowTechnique::JitteredPcf},
                       AgreementCase{"vsm", ShadowTechnique::Vsm},
+                      AgreementCase{"evsm", ShadowTechnique::Evsm},
+                      AgreementCase{"msm", ShadowTechnique::Msm}),
+    [](const ::testing::TestParamInfo<AgreementCase>& value) { return value.param.name; });
+
+/// Visibility (red) or the slot view (red slot, green texels to the page's edge) of one frame, in floats.
+std::vector<float> floatFrame(content::LoadedScene& loaded, ShadowSettings settings) {
+    engine::Engine engine;
+    engine.addModule(std::make_unique<ShadowModule>(settings));
+    engine::RenderTarget target({160, 120}, engine::ColorFormat::Rgba32F);
+    engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    return target.readPixelsFloat();
+}
+
+class VirtualPageSeams : public ::testing::TestWithParam<AgreementCase> {};
+
+// Lookups whose kernel straddles two pages read the neighbour's texels from the tile's border: they disagree
+// with a whole map no more often than lookups inside a page do.
+TEST_P(VirtualPageSeams, MatchPageInteriors) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    ShadowSettings settings = virtualSettings(GetParam().technique);
+    settings.pcfRadius = GetParam().pcfRadius;
+    const std::vector<float> paged = floatFrame(loaded, settings);
+    ShadowSettings fitted = settings;
+    fitted.mapAllocation = MapAllocation::Fitted;
+    const std::vector<float> whole = floatFrame(loaded, fitted);
+    settings.debugView = ShadowDebugView::Slot;
+    const std::vector<float> slots = floatFrame(loaded, settings);
+    // Within the kernel's reach of a page's edge, and a texel for bilinear neighbours.
+    const float reach = ShadowPlan::resolve(settings).kernelReachTexels + 1.0f;
+    std::size_t seam = 0;
+    std::size_t seamDisagree = 0;
+    std::size_t interior = 0;
+    std::size_t interiorDisagree = 0;
+    for (std::size_t i = 0; i < paged.size(); i += 4) {
+        const float edge = slots[i + 1];
+        if (!(edge >= 0.0f)) {
+            continue;
+        }
+        const bool disagree = std::abs(paged[i] - whole[i]) > 0.25f;
+        (edge < reach ? seam : interior) += 1;
+        (edge < reach ? seamDisagree : interiorDisagree) += disagree;
+    }
+    ASSERT_GT(seam, 100u) << "the view should hold page borders";
+    ASSERT_GT(interior, seam);
+    const double seamRate = static_cast<double>(seamDisagree) / static_cast<double>(seam);
+    const double interiorRate = static_cast<double>(interiorDisagree) / static_cast<double>(interior);
+    EXPECT_LE(seamRate, 2.0 * interiorRate + 0.002)
+        << seamDisagree << " of " << seam << " seam pixels, " << interiorDisagree << " of " << interior
+        << " inside pages";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryFamily, VirtualPageSeams,
+    ::testing::Values(AgreementCase{"slope_scaled", ShadowTechnique::SlopeScaledBias},
+                      AgreementCase{"pcf", ShadowTechnique::Pcf},
+                      AgreementCase{"pcf_wide", ShadowTechnique::Pcf, 3.0f},
+                      AgreementCase{"gsm", ShadowTechnique::Gsm},
+                      AgreementCase{"receiver_plane", ShadowTechnique::ReceiverPlaneBias},
+                      AgreementCase{"pcf_gsm_average", ShadowTechnique::PcfGsmAverageGradient},
+                      AgreementCase{"pcf_gsm_average_wide", ShadowTechnique::PcfGsmAverageGradient, 3.0f},
                       AgreementCase{"evsm", ShadowTechnique::Evsm},
                       AgreementCase{"msm", ShadowTechnique::Msm}),
     [](const ::testing::TestParamInfo<AgreementCase>& value) { return value.param.name; });

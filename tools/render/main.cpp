@@ -290,8 +290,17 @@ int main(int argc, char** argv) {
                << "  \"shadowTechnique\": \""
                << (options.shadows ? shadows::toString(options.shadows->technique) : "none") << "\",\n"
                << "  \"shadowMaps\": " << (shadowModule ? shadowModule->stats().shadowMaps : 0) << ",\n"
-               << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n"
-               << "  \"modules\": [";
+               << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n";
+        if (shadowModule && shadowModule->stats().virtualMaps) {
+            // The last timed frame's pages: a static view draws none once the first frame has.
+            const shadows::VirtualPageStats pages = shadowModule->stats().pages;
+            report << "  \"virtualPages\": {\"requested\": " << pages.requested
+                   << ", \"rendered\": " << pages.rendered << ", \"cached\": " << pages.cached
+                   << ", \"coarsened\": " << pages.coarsened << ", \"refused\": " << pages.refused
+                   << ", \"resident\": " << pages.resident << ", \"poolPages\": " << pages.poolPages
+                   << "},\n";
+        }
+        report << "  \"modules\": [";
         for (std::size_t i = 0; i < options.modules.size(); ++i) {
             report << (i ? ", " : "") << '"' << jsonEscape(options.modules[i]) << '"';
         }

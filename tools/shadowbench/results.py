@@ -661,6 +661,93 @@ def path_shimmer_section(path):
                "the texel density (\"Fitted to what the screen sees\").\n")
 
 
+def seams(r):
+    """Error rates (visibility off the truth by more than 0.5) of scored pixels whose kernel straddles a page
+    border, against the page interiors'."""
+    m = r.get("seams")
+    if not m:
+        return "–"
+    return f"{m['pixels']}: {100 * m['errorRate']:.2f} % / {100 * m['interiorErrorRate']:.2f} %"
+
+
+def virtual_section(timed, suns):
+    """Virtual maps against the default fitted maps: density, pages, memory, edges and frame time beside VDSM."""
+    out.append("## Virtual maps\n")
+    out.append(f"The default technique with whole fitted maps (`{timed['defaultTechnique']}-2048-d24`) and with virtual "
+               "maps (`virtual`: `mapAllocation` `virtual`, 64 MiB of 128² pages, docs/SHADOWS.md \"Virtual maps\"), "
+               f"{timed['width']}x{timed['height']}, every scene under its own light; osgShadow's ViewDependentShadowMap "
+               "(`osg-vdsm`) where the peer has the scene. m as in \"Defaults\", measured in the clipmap level each "
+               "pixel actually read. Pages: drawn in the cold first frame (the same view again draws none), and per "
+               "frame while the camera walks 1.5 units/s at 30 frames/s for "
+               f"{timed.get('walkFrames', 30)} frames, in texels (borders included) as multiples of the lit receiver "
+               "pixels. Times are the static view's frames (no page drawn), "
+               f"{timed['timingMethod']}; the peer's are from its own run of the same scene, camera and light.\n")
+    lines = ["| scene | configuration | m ≤ 1 / p99 / p99.9 | edges p95 px | meets the floor | cold pages (× lit px) | "
+             "walk (× lit px per frame) | coarsened | memory | shadow ms | lighting ms | frame ms | frame / VDSM |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    summary = {"density": 0, "cold": 0, "walk": 0, "memory": 0, "frame": 0, "views": 0, "peers": 0}
+    for scene in dict.fromkeys(r["scene"] for r in timed["results"]):
+        rows = [r for r in timed["results"] if r["scene"] == scene]
+        peer = next((r for r in rows if r["label"] == "osg-vdsm"), None)
+        for r in rows:
+            if r["label"].startswith("osg-") and r is not peer:
+                continue
+            d = r.get("density")
+            density = f"{100 * d['atMostOnePixel']:.1f} % / {d['p99']:.2f} / {d.get('p999', 0):.2f}" if d else "–"
+            pages = r.get("pages")
+            lit = max(d["pixels"], 1) if d else 1
+            cold = f"{pages['coldRendered']} ({pages['coldTexels'] / lit:.1f}×)" if pages else "–"
+            walk = f"{pages['walkTexelsPerFrame'] / lit:.2f}×" if pages and pages["walkTexelsPerFrame"] >= 0 else "–"
+            ratio = f"{frame_ms(r) / frame_ms(peer):.2f}×" if peer and r is not peer else "–"
+            e = r["edges"]
+            lines.append(f"| {scene} | {r['label']} | {density} | {e['trueToRendered']['p95']:.1f} / "
+                         f"{e['renderedToTrue']['p95']:.1f} | {'yes' if meets_floor(r) else 'no'} | {cold} | {walk} | "
+                         f"{pages['coarsened'] if pages else '–'} | {r['shadowBytes'] / 2**20:.0f} MiB | "
+                         f"{r['shadowPassMs']['median']:.1f} | {r['lightingPassMs']['median']:.1f} | {frame_ms(r):.1f} | "
+                         f"{ratio} |")
+            if pages:
+                summary["views"] += 1
+                summary["density"] += bool(d and d["atMostOnePixel"] >= 0.99 and d.get("p999", 9) <= 1.5)
+                summary["cold"] += pages["coldTexels"] / lit <= 3.0
+                summary["walk"] += 0 <= pages["walkTexelsPerFrame"] / lit <= 0.3
+                summary["memory"] += r["shadowBytes"] <= 64 * 2**20 + 2**21
+                if peer:
+                    summary["peers"] += 1
+                    summary["frame"] += frame_ms(r) <= 0.6 * frame_ms(peer)
+    out.append("\n".join(lines) + "\n")
+    out.append(f"Against the goals, of {summary['views']} views: {summary['density']} have ≥ 99 % of lit receivers at "
+               f"m ≤ 1 with p99.9 ≤ 1.5; {summary['cold']} draw a cold frame of ≤ 3× the lit receiver pixels; "
+               f"{summary['walk']} draw ≤ 0.3× per frame while walking; {summary['memory']} fit in 64 MiB (the page "
+               f"tables and request bits of about 1.1 MiB beside the pool); {summary['frame']} of the "
+               f"{summary['peers']} with a peer row run a frame ≤ 0.6× VDSM's.\n")
+    out.append("Why the texel counts stay above the goal: m is a texel's largest extent in pixels, and a square texel "
+               "meets m ≤ 1 only at the pixel footprint's shortest axis. A surface seen at a grazing angle from the "
+               "camera, or lit at one from the sun, stretches that footprint, so m ≤ 1 costs 1/sin of the angle in "
+               "texels per pixel (about 11× at 5°, 19× at 3°): the density goal and the texel goal cannot both hold "
+               "on such views with square texels. Pages add their own waste where few pixels fall in one.\n")
+    # Low suns: the fitted default and the virtual map side by side.
+    lines = ["| view | fitted: m ≤ 1 / p99.9 / edges p95 | virtual: m ≤ 1 / p99.9 / edges p95 | virtual cold pages (× lit px) | "
+             "coarsened | seam pixels: errors / interior errors |",
+             "| --- | --- | --- | --- | --- | --- |"]
+    for scene in dict.fromkeys(r["scene"] for r in suns["results"]):
+        rows = {("virtual" if r["label"] == "virtual" else "fitted"): r for r in suns["results"] if r["scene"] == scene}
+        if len(rows) < 2:
+            continue
+        cells = []
+        for kind in ("fitted", "virtual"):
+            r = rows[kind]
+            d = r.get("density") or {"atMostOnePixel": 0, "p999": 0}
+            e = r["edges"]
+            cells.append(f"{100 * d['atMostOnePixel']:.1f} % / {d.get('p999', 0):.2f} / {e['trueToRendered']['p95']:.1f}, "
+                         f"{e['renderedToTrue']['p95']:.1f}")
+        pages = rows["virtual"].get("pages") or {}
+        lit = max((rows["virtual"].get("density") or {}).get("pixels", 1), 1)
+        lines.append(f"| {scene} | {cells[0]} | {cells[1]} | {pages.get('coldRendered', 0)} "
+                     f"({pages.get('coldTexels', 0) / lit:.1f}×) | {pages.get('coarsened', 0)} | {seams(rows['virtual'])} |")
+    out.append(f"The generated apron under suns from 40° to 3°, {suns['width']}x{suns['height']}, accuracy only:\n")
+    out.append("\n".join(lines) + "\n")
+
+
 model_sections = []
 real_meta = load("real")
 own, swept, large = load("defaults-own"), load("defaults-swept"), load("defaults-large")
@@ -670,6 +757,8 @@ real_models(real_meta, load("scaling"))
 every_light_section(load("outdoor-cascades"), load("every-light"))
 fit_section(load("fit"))
 path_shimmer_section(load("path-shimmer"))
+if (work / "virtual" / "results.json").exists():
+    virtual_section(load("virtual"), load("virtual-suns"))
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))

@@ -57,6 +57,22 @@ struct TexelDensity {
     double percentile999 = 0.0;
 };
 
+/// @brief Virtual maps: errors of scored pixels (lit or shadowed, outside the band) whose lookup lies within
+/// a page's border of its edge, so that its kernel straddles two pages, against those of the others.
+struct SeamErrors {
+    std::size_t pixels = 0;
+    /// Fraction of them whose visibility is off the truth's by more than 0.5.
+    double errorRate = 0.0;
+    std::size_t interiorPixels = 0;
+    double interiorErrorRate = 0.0;
+};
+
+/// @brief The seam errors of `visibility` against `truth` over the scored pixels of `classes`, a pixel at a
+/// seam where its `pageEdges` (texels to its page's edge, ShadowDebugView::Slot; negative: no page) is below
+/// `reachTexels`.
+SeamErrors seamErrors(std::span<const PixelClass> classes, std::span<const float> truth,
+                      std::span<const float> visibility, std::span<const float> pageEdges, float reachTexels);
+
 /// @brief One technique's errors against ground truth over one image (see computeMetrics for definitions).
 struct ShadowMetrics {
     std::size_t receivers = 0;
@@ -75,6 +91,8 @@ struct ShadowMetrics {
     EdgePlacement edges;
     /// Filled by the benchmark for our maps (it knows their projections); empty for the peer's.
     TexelDensity density;
+    /// Virtual maps only (pixels 0 otherwise).
+    SeamErrors seams;
 };
 
 /// @brief Where each pixel lies across the light's rays, so that the boundary band can be measured in shadow

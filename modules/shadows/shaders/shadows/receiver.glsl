@@ -74,6 +74,7 @@ vec2 gsDebugTexel = vec2(0.0);
 float gsDebugDensity = -1.0; // Lloyd's m (gsTexelFootprintPixels); -1 where no map was read
 int gsDebugSlot = -1;
 int gsDebugPageLevel = -1;     // virtual maps: the clipmap level read
+float gsDebugPageEdge = -1.0;  // virtual maps: texels from the lookup to its page's nearest edge
 bool gsDebugPageBorder = false; // within a texel of its page's edge
 bool gsDebugPageDrawn = false;  // the page was drawn this frame
 bool gsDebugSet = false;
@@ -241,9 +242,11 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
             return -1.0;
         }
         int tile = int(entry & 0xffffffu);
-#ifdef GS_SHADOW_DEBUG_PAGES
+#if defined(GS_SHADOW_DEBUG_PAGES) || defined(GS_SHADOW_DEBUG_SLOT)
         if (!gsDebugSet) {
             vec2 inPage = window - vec2(page) * gsVirtualPage.x;
+            vec2 toEdge = min(inPage, gsVirtualPage.x - inPage);
+            gsDebugPageEdge = min(toEdge.x, toEdge.y);
             gsDebugPageLevel = resident;
             gsDebugPageBorder = any(lessThan(min(inPage, gsVirtualPage.x - inPage), vec2(1.0)));
             gsDebugPageDrawn = (entry & 0x40000000u) != 0u;
@@ -445,7 +448,7 @@ void gsShadowDebug(inout vec3 color) {
                                            : vec3(1.0, 0.2, 0.15);
     color = density * (0.35 + 0.65 * gsDebugVisibility);
 #elif defined(GS_SHADOW_DEBUG_SLOT)
-    color = vec3(float(gsDebugSlot));
+    color = vec3(float(gsDebugSlot), gsDebugPageEdge, 0.0);
 #elif defined(GS_SHADOW_DEBUG_PAGES)
     const vec3 levels[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),
                                    vec3(1.0, 0.9, 0.2), vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
