@@ -122,6 +122,20 @@ OrbitCamera SandboxScene::fileOrbit() const {
     return OrbitCamera::lookingFrom(position(world), forward(world), centre_);
 }
 
+void SandboxScene::offsetFirstMesh(const glm::vec3& offset) {
+    if (firstMesh_ == engine::kNoEntity) {
+        loaded_.scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+            if (firstMesh_ == engine::kNoEntity && entity.mesh) {
+                firstMesh_ = id;
+                firstMeshTranslation_ = entity.transform.translation;
+            }
+        });
+    }
+    if (firstMesh_ != engine::kNoEntity) {
+        loaded_.scene.entity(firstMesh_).transform.translation = firstMeshTranslation_ + offset;
+    }
+}
+
 void SandboxScene::apply(const std::optional<SandboxSettings::LightAngles>& light,
                          const std::optional<OrbitCamera>& camera) {
     engine::Scene& scene = loaded_.scene;

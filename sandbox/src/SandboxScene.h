@@ -55,10 +55,16 @@ public:
     /// so, and so does the control panel's light type choice.
     void setLightType(engine::LightType type);
 
+    /// @brief Moves the first mesh entity by `offset` from where the file has it (zero puts it back): a
+    /// moving caster for the soak run's virtual maps.
+    void offsetFirstMesh(const glm::vec3& offset);
+
 private:
     content::LoadedScene loaded_;
     engine::EntityId camera_ = engine::kNoEntity;
     engine::EntityId light_ = engine::kNoEntity;
+    engine::EntityId firstMesh_ = engine::kNoEntity;
+    glm::vec3 firstMeshTranslation_{0.0f};
     engine::Transform fileCamera_;
     engine::Transform fileLight_;
     engine::LightComponent fileLightComponent_;

@@ -76,13 +76,55 @@ double residentMiB() {
            (1024.0 * 1024.0);
 }
 
+namespace {
+
+constexpr int kSoakVirtualFrames = 4;
+
+/// Virtual maps under a moving camera and a moving caster: kSoakVirtualFrames frames of the directional
+/// light, the camera orbiting and the first mesh sliding, so that pages are marked, evicted, invalidated and
+/// drawn every frame; then everything is put back, so each cycle repeats the last.
+void soakVirtualMaps(Session& session, engine::RenderTarget& target, std::size_t& frames,
+                     std::size_t& glErrors, std::ostream& out) {
+    session.scene().setLightType(engine::LightType::Directional);
+    SandboxSettings& settings = session.settings();
+    const SandboxSettings before = settings;
+    settings.a.technique = shadows::ShadowSettings{}.technique;
+    settings.b.technique = shadows::ShadowTechnique::Evsm;
+    settings.a.mapAllocation = settings.b.mapAllocation = shadows::MapAllocation::Virtual;
+    // Small pools: over budget, pages are coarsened and evicted every frame.
+    settings.a.virtualBudgetMiB = 4;
+    settings.b.virtualBudgetMiB = 8;
+    settings.compare = true;
+    OrbitCamera orbit = session.scene().fileOrbit();
+    for (int frame = 0; frame < kSoakVirtualFrames; ++frame) {
+        orbit.yaw += 7.0f;
+        settings.camera = orbit;
+        session.scene().offsetFirstMesh(
+            glm::vec3(0.02f * orbit.distance * static_cast<float>(frame), 0.0f, 0.0f));
+        session.render({target.framebuffer().id(), target.size()});
+        ++frames;
+        for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+            ++glErrors;
+            out << "soak: GL error 0x" << std::hex << error << std::dec << " at frame " << frames
+                << " (virtual maps, moving camera and caster)" << std::endl;
+        }
+    }
+    session.scene().offsetFirstMesh(glm::vec3(0.0f));
+    settings = before;
+}
+
+} // namespace
+
 int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& out) {
     const std::vector<shadows::ShadowTechnique>& techniques = shadows::allTechniques();
-    const std::size_t framesPerCycle = line.soakScenes.size() * techniques.size() * kSoakLightTypes.size();
+    const std::size_t framesPerCycle =
+        line.soakScenes.size() * (techniques.size() * kSoakLightTypes.size() + kSoakVirtualFrames);
     out << "soak: " << *line.soakCycles << " cycles of " << line.soakScenes.size() << " scenes x "
-        << techniques.size() << " techniques x " << kSoakLightTypes.size()
-        << " light types = " << framesPerCycle << " frames each, " << line.size.x << "x" << line.size.y
-        << "; the first " << kSoakWarmUpCycles << " cycles are the warm-up" << std::endl;
+        << techniques.size() << " techniques x " << kSoakLightTypes.size() << " light types, plus "
+        << kSoakVirtualFrames
+        << " frames of virtual maps under a moving camera and caster per scene = " << framesPerCycle
+        << " frames each, " << line.size.x << "x" << line.size.y << "; the first " << kSoakWarmUpCycles
+        << " cycles are the warm-up" << std::endl;
 
     Session session(catalog, line.settings);
     engine::RenderTarget target(line.size);
@@ -114,6 +156,7 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
                     }
                 }
             }
+            soakVirtualMaps(session, target, frames, glErrors, out);
         }
         glFinish();
         SoakSample sample;

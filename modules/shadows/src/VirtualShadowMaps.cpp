@@ -257,7 +257,22 @@ VirtualShadowMaps::update(engine::ModuleHost& host, const FitView& fit,
             glTextureParameteri(pageTable_->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
             glTextureParameteri(pageTable_->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
             pageTableLights_ = static_cast<int>(lights_.size());
+            uploaded_.clear();
         }
+        // The tables change only with the pool's pages (drawn, evicted, dropped), or a window moving or
+        // shifting its levels; the last upload's drawn bits go stale once nothing is drawn.
+        std::vector<UploadedTable> current;
+        for (const Light& light : lights_) {
+            current.push_back({light.index, light.geometry.finestLevel,
+                               light.geometry.windowOrigin(light.geometry.finestLevel), !toRender_.empty()});
+        }
+        const bool changed = !toRender_.empty() || stats_.invalidated > 0 || current != uploaded_ ||
+                             std::any_of(uploaded_.begin(), uploaded_.end(),
+                                         [](const UploadedTable& table) { return table.drawnBits; });
+        if (!changed) {
+            return lights_;
+        }
+        uploaded_ = current;
         for (const Light& light : lights_) {
             std::vector<std::uint32_t> table = buildPageTable(pool_, light.index, light.geometry);
             std::vector<bool> drawn(static_cast<std::size_t>(pool_.tiles()), false);

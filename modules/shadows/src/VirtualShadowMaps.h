@@ -90,6 +90,15 @@ private:
     std::vector<std::pair<int, PageKey>> toRender_;
     VirtualPageStats stats_;
     std::uint64_t frame_ = 0; // the pool's clock: one tick per update
+    /// What each light's uploaded page table was built for.
+    struct UploadedTable {
+        int light = 0;
+        int finestLevel = 0;
+        glm::ivec2 finestOrigin{0};
+        bool drawnBits = false;
+        bool operator==(const UploadedTable&) const = default;
+    };
+    std::vector<UploadedTable> uploaded_;
 };
 
 } // namespace shadows
