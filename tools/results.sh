@@ -154,6 +154,10 @@ done
     --frames 5 --walk 30 --peer "$work/osg" --out "$work/virtual"
 "$bench" --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 --techniques default --resolutions 2048 \
     --config "virtual:mapAllocation=virtual" --accuracy-only --out "$work/virtual-suns"
+#     The texel size the pages are drawn for (virtualTexelPixels) against the texels they take, accuracy only.
+"$bench" --scene apron-merged --scene terrain-low --scene terrain --scene knob --scene cylinder-engine \
+    --techniques default --resolutions 2048 --config "m1:mapAllocation=virtual" --config "m2:mapAllocation=virtual,virtualTexelPixels=2" \
+    --config "m4:mapAllocation=virtual,virtualTexelPixels=4" --accuracy-only --walk 30 --out "$work/virtual-texels"
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results

@@ -146,6 +146,9 @@ struct AccuracyCase {
     engine::LightType light = engine::LightType::Directional;
     /// ShadowSettings::cascadeCount (directional lights); 1 is one fitted map.
     int cascades = 1;
+    /// Virtual maps (directional lights) with this page budget, MiB; 0: fitted maps. Measured against the
+    /// fitted map's reference.
+    int virtualBudgetMiB = 0;
 };
 
 std::vector<AccuracyCase> accuracyCases(bool full) {
@@ -164,7 +167,8 @@ std::vector<AccuracyCase> accuracyCases(bool full) {
         {"point, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Point},
         {"point, scene scale 100000", 1e5f, 1024, 1e3f, L::Point},
         {"4 cascades reference: scale 1, map 1024", 1.0f, 1024, 1e3f, L::Directional, 4},
-        {"4 cascades, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 4}};
+        {"4 cascades, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 4},
+        {"virtual maps, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 1, 64}};
     if (full) {
         list.push_back({"scene scale 1000", 1e3f});
         list.push_back({"map 2048", 1.0f, 2048});
@@ -179,6 +183,10 @@ std::vector<AccuracyCase> accuracyCases(bool full) {
         list.push_back({"4 cascades, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Directional, 4});
         list.push_back({"4 cascades, map 256", 1.0f, 256, 1e3f, L::Directional, 4});
         list.push_back({"4 cascades, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Directional, 4});
+        list.push_back({"virtual maps, scale 1", 1.0f, 1024, 1e3f, L::Directional, 1, 64});
+        list.push_back({"virtual maps, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Directional, 1, 64});
+        list.push_back({"virtual maps, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Directional, 1, 64});
+        list.push_back({"virtual maps, budget 1 MiB", 1.0f, 1024, 1e3f, L::Directional, 1, 1});
     }
     return list;
 }
@@ -221,6 +229,12 @@ bool accuracySweep(bool full, const std::filesystem::path& imageFolder, std::ost
             settings.technique = techniques[t];
             settings.resolution = c.resolution;
             settings.cascadeCount = c.cascades;
+            if (c.virtualBudgetMiB > 0) {
+                settings.mapAllocation = shadows::MapAllocation::Virtual;
+                settings.virtualBudgetMiB = c.virtualBudgetMiB;
+                // A page of 32-bit moments with its border needs more than 1 MiB at 128².
+                settings.virtualPageSize = c.virtualBudgetMiB < 2 ? 64 : settings.virtualPageSize;
+            }
             const shadowbench::Accuracy accuracy = bench.measure(prepared, settings);
             const shadowbench::ShadowMetrics& m = accuracy.metrics;
             if (isReference) {

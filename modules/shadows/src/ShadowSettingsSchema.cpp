@@ -233,6 +233,14 @@ const std::vector<SettingRow>& rows() {
          IntSetting{&S::virtualPageSize,
                     [](const S&) { return fixed({.min = 32, .max = 512, .powerOfTwoRequired = true}); }},
          virtualMaps, "--page-size"},
+        {"virtualTexelPixels", "pixels", "texel on screen",
+         "The largest extent on screen of one texel of the level each pixel's page is drawn at (Lloyd's m). "
+         "1 "
+         "gives a texel per pixel or finer; 2 draws about a quarter of the texels, with edges up to two "
+         "pixels "
+         "off.",
+         FloatSetting{&S::virtualTexelPixels, {.min = 0.25f, .max = 16.0f}, 0.25f, 8.0f, "%.2f", true},
+         virtualMaps, "--texel-pixels"},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},

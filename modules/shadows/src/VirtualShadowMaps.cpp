@@ -30,7 +30,8 @@ glm::vec4 unite(const glm::vec4& a, const glm::vec4& b) {
 
 VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const ShadowPlan& plan)
     : plan_(plan), pageSize_(settings.virtualPageSize), border_(virtualPageBorderTexels(plan)),
-      tile_(settings.virtualPageSize + 2 * virtualPageBorderTexels(plan)), pool_(0) {
+      tile_(settings.virtualPageSize + 2 * virtualPageBorderTexels(plan)),
+      texelPixels_(settings.virtualTexelPixels), pool_(0) {
     const std::size_t budget = static_cast<std::size_t>(settings.virtualBudgetMiB) << 20;
     const std::size_t tiles = budget / virtualTileBytes(plan, pageSize_);
     if (tiles < 1) {
@@ -228,6 +229,7 @@ VirtualShadowMaps::update(engine::ModuleHost& host, const FitView& fit,
         mark.set("uPageSize", pageSize_);
         mark.set("uPagesPerSide", side);
         glUniform1f(mark.uniformLocation("uReach"), static_cast<float>(border_));
+        glUniform1f(mark.uniformLocation("uTexelPixels"), texelPixels_);
         glUniform2iv(mark.uniformLocation("uWindowOrigin"), kRequestLevels, glm::value_ptr(origins[0]));
         glBindTextureUnit(0, depth);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, requests_->id());

@@ -76,6 +76,7 @@ private:
     int pageSize_ = 128;
     int border_ = 2;
     int tile_ = 132;
+    float texelPixels_ = 1.0f;
     int tilesPerRow_ = 1;
     int layers_ = 1;
     PagePool pool_;

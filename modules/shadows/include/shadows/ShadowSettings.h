@@ -143,6 +143,8 @@ struct ShadowSettings {
     int virtualBudgetMiB = 64;
     /// Side of a virtual page, texels.
     int virtualPageSize = 128;
+    /// Largest extent on screen, pixels, of a texel of the level a virtual page is drawn at (Lloyd's m).
+    float virtualTexelPixels = 1.0f;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
     /// Cascades of each directional light's map (1: one map over where visible receivers can be shadowed; 0:

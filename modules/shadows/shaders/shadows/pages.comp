@@ -20,6 +20,7 @@ uniform int uLevelBase;
 uniform int uPageSize;
 uniform int uPagesPerSide;
 uniform float uReach;
+uniform float uTexelPixels; // the m a page's level is chosen for (ShadowSettings::virtualTexelPixels)
 // First page of each request level's window (ClipmapGeometry::windowOrigin), from the CPU so both agree.
 uniform ivec2 uWindowOrigin[GS_REQUEST_LEVELS];
 
@@ -87,7 +88,10 @@ void main() {
             bool lit = dot(normal, uToLight) > 0.0;
             float unitFootprint = lit ? gsTexelFootprintPixels((toLight * dPdx).xy, (toLight * dPdy).xy) : 0.0;
             float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
-            int level = gsVirtualLevel(unitFootprint, pixelSize, uLevelBase, GS_REQUEST_LEVELS) - uLevelBase;
+            // m grows with the texel: a texel uTexelPixels times as large spans uTexelPixels times the pixels.
+            int level = gsVirtualLevel(unitFootprint / uTexelPixels, pixelSize * uTexelPixels, uLevelBase,
+                                       GS_REQUEST_LEVELS) -
+                        uLevelBase;
             vec2 light = (uWorldToLight * vec4(position, 1.0)).xy;
             // The finest level at or above the one asked for whose window holds the lookup and its reach.
             float windowTexels = float(uPageSize * uPagesPerSide);
