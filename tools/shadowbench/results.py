@@ -748,6 +748,34 @@ def virtual_section(timed, suns):
     out.append("\n".join(lines) + "\n")
 
 
+def virtual_texels_section(texels):
+    """The texel size pages are drawn for against the texels they take and what the edges show."""
+    labels = [label for label in dict.fromkeys(r["label"] for r in texels["results"])]
+    out.append(f"The texel size on screen the pages are drawn for (`virtualTexelPixels`, m1 the default, m2, m4), against "
+               f"the fitted default, {texels['width']}x{texels['height']}, each scene under its own light, accuracy only: "
+               "m ≤ 1 / m p99, edges p95 (true→rendered, rendered→true), cold pages in texels as multiples of the lit "
+               "receiver pixels, and per frame of the walk.\n")
+    lines = ["| scene | " + " | ".join(labels) + " |", "| --- |" + " --- |" * len(labels)]
+    for scene in dict.fromkeys(r["scene"] for r in texels["results"]):
+        cells = []
+        for label in labels:
+            r = next((r for r in texels["results"] if r["scene"] == scene and r["label"] == label), None)
+            if not r:
+                cells.append("–")
+                continue
+            d = r.get("density") or {"atMostOnePixel": 0, "p99": 0, "pixels": 1}
+            e = r["edges"]
+            cell = (f"{100 * d['atMostOnePixel']:.0f} % / {d['p99']:.1f}; {e['trueToRendered']['p95']:.1f}, "
+                    f"{e['renderedToTrue']['p95']:.1f}")
+            pages = r.get("pages")
+            if pages:
+                lit = max(d["pixels"], 1)
+                cell += f"; {pages['coldTexels'] / lit:.0f}×, walk {pages['walkTexelsPerFrame'] / lit:.2f}×"
+            cells.append(cell)
+        lines.append(f"| {scene} | " + " | ".join(cells) + " |")
+    out.append("\n".join(lines) + "\n")
+
+
 model_sections = []
 real_meta = load("real")
 own, swept, large = load("defaults-own"), load("defaults-swept"), load("defaults-large")
@@ -759,6 +787,7 @@ fit_section(load("fit"))
 path_shimmer_section(load("path-shimmer"))
 if (work / "virtual" / "results.json").exists():
     virtual_section(load("virtual"), load("virtual-suns"))
+    virtual_texels_section(load("virtual-texels"))
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))
