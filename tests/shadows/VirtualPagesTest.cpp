@@ -128,10 +128,16 @@ TEST(DepthRangeFor, StaysWhileACasterMovesInsideIt) {
 }
 
 TEST(RequestLevelBase, FollowsTheScenesScale) {
-    EXPECT_EQ(shadows::requestLevelBase(1.0f), -48);
-    EXPECT_EQ(shadows::requestLevelBase(1e5f), 16 - 48);
-    EXPECT_EQ(shadows::requestLevelBase(0.0f), -48);
-    EXPECT_EQ(shadows::requestLevelBase(std::numeric_limits<float>::quiet_NaN()), -48);
+    EXPECT_EQ(shadows::requestLevelBase(1.0f), -24);
+    EXPECT_EQ(shadows::requestLevelBase(1e5f), 16 - 24);
+    EXPECT_EQ(shadows::requestLevelBase(0.0f), -24);
+    EXPECT_EQ(shadows::requestLevelBase(std::numeric_limits<float>::quiet_NaN()), -24);
+}
+
+TEST(ClipmapGeometry, FineLevelsFarFromTheOriginKeepAnIntegerWindow) {
+    ClipmapGeometry clipmap = geometry({3e6f, -3e6f});
+    const glm::ivec2 origin = clipmap.windowOrigin(-40);
+    EXPECT_EQ(origin, glm::ivec2((1 << 28) - 64, -(1 << 28) - 64));
 }
 
 PageKey key(int level, int x, int y = 0, int light = 0) {

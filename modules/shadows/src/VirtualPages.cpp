@@ -52,7 +52,10 @@ double ClipmapGeometry::texelSize(int level) {
 
 glm::ivec2 ClipmapGeometry::windowOrigin(int level) const {
     const double pageWorld = texelSize(level) * pageSize;
-    const glm::dvec2 page = glm::floor(glm::dvec2(camera) / pageWorld);
+    // Clamped so that a level far finer than the camera's distance from the light-space origin can hold
+    // (whose pages no pixel asks for) still has an integer window.
+    constexpr double kLimit = 1 << 28;
+    const glm::dvec2 page = glm::clamp(glm::floor(glm::dvec2(camera) / pageWorld), -kLimit, kLimit);
     return glm::ivec2(page) - glm::ivec2(pagesPerSide() / 2);
 }
 
@@ -120,7 +123,7 @@ int levelForTexelSize(double texelSize, int base) {
 
 int requestLevelBase(float sceneExtent) {
     const float extent = std::isfinite(sceneExtent) && sceneExtent > 0.0f ? sceneExtent : 1.0f;
-    return static_cast<int>(std::floor(std::log2(extent))) - 48;
+    return static_cast<int>(std::floor(std::log2(extent))) - 24;
 }
 
 std::uint32_t pageTableEntry(int levelIndex, int tile) {

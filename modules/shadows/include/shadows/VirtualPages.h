@@ -104,7 +104,8 @@ glm::vec2 depthRangeFor(const glm::mat4& lightView, std::span<const Aabb> boxes)
 /// clamped to [base, base + kRequestLevels − 1]; NaN or non-positive sizes give `base`'s finest.
 int levelForTexelSize(double texelSize, int base);
 
-/// @brief The finest request level a scene spanning `sceneExtent` world units needs: 48 octaves below it.
+/// @brief The finest request level a scene spanning `sceneExtent` world units may need: 24 octaves below it
+/// (texels of a 16 millionth of the scene), so the request levels reach 40 octaves above it.
 int requestLevelBase(float sceneExtent);
 
 /// @brief Entry of a page table texel (R32UI): 0 when no page of this or a coarser level is resident; else
