@@ -50,7 +50,7 @@ VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const Shado
         std::clamp<std::size_t>(tiles / perLayer, 1, static_cast<std::size_t>(std::max(maxLayers, 1))));
     pool_ = PagePool(static_cast<int>(perLayer) * layers_);
     ShadowPlan atlasPlan = plan;
-    atlasPlan.blursMoments = false; // tiles are blurred in place, not through a full-size temporary
+    atlasPlan.blursMoments = false; // pages are not blurred (ShadowSettings::validate refuses a blur radius)
     atlas_ = std::make_unique<ShadowMapArray>(tilesPerRow_ * tile_, layers_, atlasPlan);
 }
 
