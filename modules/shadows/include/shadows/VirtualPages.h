@@ -33,8 +33,9 @@ struct VirtualPageStats {
     int coarsened = 0;
     /// Requests the pool could not hold even so: lookups there find no texels and are lit (warned).
     int refused = 0;
-    /// Pages resident in the pool, and the pool's size.
+    /// Pages resident in the pool.
     int resident = 0;
+    /// Pages the pool holds at most (its budget over one tile's bytes).
     int poolPages = 0;
     /// Pages dropped this frame because a caster moved over them or the light changed.
     int invalidated = 0;
@@ -53,13 +54,19 @@ std::size_t virtualTileBytes(const ShadowPlan& plan, int pageSize);
 /// absolute page coordinates on that level's grid, which is anchored at the light-space origin (so a page
 /// keeps its key, and its cached texels, however the window of pages around the camera moves).
 struct PageKey {
+    /// Engine light index.
     int light = 0;
+    /// Absolute level: texels 2^level world units wide.
     int level = 0;
+    /// Absolute page coordinates on the level's grid.
     glm::ivec2 page{0};
+    /// @brief Field-wise equality.
     bool operator==(const PageKey&) const = default;
 };
 
+/// @brief Hash of a PageKey, for the pool's map of resident pages.
 struct PageKeyHash {
+    /// @brief Mixes the key's four integers.
     std::size_t operator()(const PageKey& key) const;
 };
 
@@ -73,10 +80,12 @@ struct ClipmapGeometry {
     glm::vec2 camera{0.0f};
     /// Light-space z range of every caster and receiver, snapped outward (depthRangeFor).
     glm::vec2 depth{0.0f, 1.0f};
+    /// Side of a page, texels (ShadowSettings::virtualPageSize).
     int pageSize = 128;
     /// Finest absolute level of the clipmap's kClipmapLevels.
     int finestLevel = 0;
 
+    /// Pages along each side of a level's window.
     [[nodiscard]] int pagesPerSide() const { return kVirtualResolution / pageSize; }
     /// World size of one texel of absolute level `level`.
     [[nodiscard]] static double texelSize(int level);
@@ -121,6 +130,7 @@ inline constexpr std::uint32_t kPageTileMask = 0x00ffffffu;
 /// PageKey's texels, reused least recently used first. Pure bookkeeping; no GL.
 class PagePool {
 public:
+    /// @brief A pool of `tiles` free tiles (none when `tiles` is not positive).
     explicit PagePool(int tiles);
 
     /// @brief What one frame's requests led to.
@@ -146,7 +156,9 @@ public:
 
     /// @brief The tile holding `key`, -1 when it is not resident.
     [[nodiscard]] int tileOf(const PageKey& key) const;
+    /// @brief Tiles in the pool.
     [[nodiscard]] int tiles() const { return static_cast<int>(tiles_.size()); }
+    /// @brief Tiles holding a page.
     [[nodiscard]] int resident() const { return static_cast<int>(residents_.size()); }
     /// @brief Calls `visit(key, tile)` for every resident page.
     template <typename Visit>
