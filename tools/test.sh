@@ -3,7 +3,7 @@
 # installs the package and builds and runs examples/host-app against it (tools/package_test.sh), then the same
 # suite built with AddressSanitizer + UndefinedBehaviorSanitizer, then every fuzzer for a
 # bounded time on a copy of its corpus (docs/ROBUSTNESS.md). Each stage prints how long it took.
-# GS_FUZZ_SECONDS: time per fuzzer, default 60.
+# GS_FUZZ_SECONDS: time per fuzzer, default 40.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -24,7 +24,7 @@ stage "package: install + example host" bash tools/package_test.sh build-ci
 stage "asan: configure + build" eval 'cmake --preset asan && cmake --build --preset asan'
 stage "asan: tests" ctest --preset asan
 stage "fuzz: configure + build" eval 'cmake --preset fuzz && cmake --build --preset fuzz'
-stage "fuzz: run" tests/fuzz/run.sh build-fuzz "${GS_FUZZ_SECONDS:-60}"
+stage "fuzz: run" tests/fuzz/run.sh build-fuzz "${GS_FUZZ_SECONDS:-40}"
 
 echo "== test.sh: all stages passed"
 printf '   %s\n' "${timings[@]}"

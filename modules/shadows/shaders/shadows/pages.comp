@@ -96,7 +96,9 @@ void main() {
             // The finest level at or above the one asked for whose window holds the lookup and its reach.
             float windowTexels = float(uPageSize * uPagesPerSide);
             for (; level < GS_REQUEST_LEVELS; ++level) {
-                vec2 window = light * exp2(-float(uLevelBase + level)) - vec2(uWindowOrigin[level] * uPageSize);
+                // In floats: a clamped window origin of a level far too fine (ClipmapGeometry::windowOrigin) times
+                // the page size may not fit an int.
+                vec2 window = light * exp2(-float(uLevelBase + level)) - vec2(uWindowOrigin[level]) * float(uPageSize);
                 if (all(greaterThanEqual(window, vec2(uReach))) && all(lessThan(window, vec2(windowTexels - uReach)))) {
                     ivec2 low;
                     ivec2 high;
