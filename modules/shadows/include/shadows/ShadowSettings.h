@@ -79,8 +79,8 @@ enum class ShadowDebugView {
     /// bright; grey where no virtual page was read.
     Pages,
     /// The map slot each pixel's lookup read, as a value (-1 where none), in red, and for a virtual page, in
-    /// green, the texels from the lookup to the page's nearest edge (-1 elsewhere): for measurements that need
-    /// to know which map or level a pixel used and whether its kernel straddles pages (float targets).
+    /// green, the texels from the lookup to the page's nearest edge (-1 elsewhere): for measurements that
+    /// need to know which map or level a pixel used and whether its kernel straddles pages (float targets).
     Slot,
 };
 
