@@ -11,6 +11,7 @@
 #include <fstream>
 #include <ostream>
 #include <sstream>
+#include <string>
 
 #include <malloc.h>
 #include <unistd.h>
@@ -80,6 +81,17 @@ namespace {
 
 constexpr int kSoakVirtualFrames = 4;
 
+/// Counts and reports the GL errors raised since the last call, at frame `frame`; `describe()` says what
+/// the frame drew (called only when there is an error).
+template <typename Describe>
+void countGlErrors(std::size_t frame, std::size_t& glErrors, std::ostream& out, Describe&& describe) {
+    for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+        ++glErrors;
+        out << "soak: GL error 0x" << std::hex << error << std::dec << " at frame " << frame << " ("
+            << describe() << ")" << std::endl;
+    }
+}
+
 /// Virtual maps under a moving camera and a moving caster: kSoakVirtualFrames frames of the directional
 /// light, the camera orbiting and the first mesh sliding, so that pages are marked, evicted, invalidated and
 /// drawn every frame; then everything is put back, so each cycle repeats the last.
@@ -103,11 +115,8 @@ void soakVirtualMaps(Session& session, engine::RenderTarget& target, std::size_t
             glm::vec3(0.02f * orbit.distance * static_cast<float>(frame), 0.0f, 0.0f));
         session.render({target.framebuffer().id(), target.size()});
         ++frames;
-        for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
-            ++glErrors;
-            out << "soak: GL error 0x" << std::hex << error << std::dec << " at frame " << frames
-                << " (virtual maps, moving camera and caster)" << std::endl;
-        }
+        countGlErrors(frames, glErrors, out,
+                      [] { return std::string("virtual maps, moving camera and caster"); });
     }
     session.scene().offsetFirstMesh(glm::vec3(0.0f));
     settings = before;
@@ -147,13 +156,11 @@ int runSoak(const CommandLine& line, const SceneCatalog& catalog, std::ostream& 
                     session.settings().compare = true;
                     session.render({target.framebuffer().id(), target.size()});
                     ++frames;
-                    for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
-                        ++glErrors;
-                        out << "soak: GL error 0x" << std::hex << error << std::dec << " at frame " << frames
-                            << " (" << scene << ", " << engine::toString(lightType) << ", "
-                            << shadows::toString(techniques[t]) << " | "
-                            << shadows::toString(session.settings().b.technique) << ")" << std::endl;
-                    }
+                    countGlErrors(frames, glErrors, out, [&] {
+                        return scene + ", " + std::string(engine::toString(lightType)) + ", " +
+                               std::string(shadows::toString(techniques[t])) + " | " +
+                               std::string(shadows::toString(session.settings().b.technique));
+                    });
                 }
             }
             soakVirtualMaps(session, target, frames, glErrors, out);
