@@ -177,6 +177,11 @@ uniform usampler2DArray gsShadowPageTable;
 int gsVirtualPageLayer = -1;
 int gsVirtualFirstSlot = 0;
 int gsVirtualNextLevel = 0;
+
+// The page under window texel `window` of a level, and the level index a page-table entry names
+// (pageTableEntry: bits 24-29).
+ivec2 gsVirtualPageAt(vec2 window) { return ivec2(floor(window / gsVirtualPage.x)); }
+int gsVirtualEntryLevel(uint entry) { return int((entry >> 24) & 63u); }
 #endif
 
 // Visibility of the fragment in map `slot`; -1 (no map drawn) is lit.
@@ -227,7 +232,7 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         // A clipmap level (gsShadowVirtualVisibility): read the texels of the page under the receiver where
         // they live in the atlas, or name the coarser level that holds them.
         vec2 window = coord.xy * gsShadowTexel[slot].x;
-        ivec2 page = ivec2(floor(window / gsVirtualPage.x));
+        ivec2 page = gsVirtualPageAt(window);
         if (any(lessThan(page, ivec2(0))) || any(greaterThanEqual(page, ivec2(gsVirtualPages.x)))) {
             gsVirtualNextLevel = slot - gsVirtualFirstSlot + 1;
             return -1.0;
@@ -236,7 +241,7 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         if (entry == 0u) {
             return 1.0; // nothing resident at any level here: the module warned that the budget fell short
         }
-        int resident = int((entry >> 24) & 63u);
+        int resident = gsVirtualEntryLevel(entry);
         if (resident != slot - gsVirtualFirstSlot) {
             gsVirtualNextLevel = resident;
             return -1.0;
@@ -389,9 +394,9 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
         // rather than through a whole lookup that would only name it.
         vec2 window = (gsShadowMatrix[gsVirtualFirstSlot + level] * vec4(worldPosition, 1.0)).xy *
                       gsShadowTexel[gsVirtualFirstSlot + level].x;
-        ivec2 page = clamp(ivec2(floor(window / gsVirtualPage.x)), ivec2(0), ivec2(gsVirtualPages.x - 1));
+        ivec2 page = clamp(gsVirtualPageAt(window), ivec2(0), ivec2(gsVirtualPages.x - 1));
         uint entry = texelFetch(gsShadowPageTable, ivec3(page, maps.kind.w + level), 0).r;
-        level = entry != 0u ? int((entry >> 24) & 63u) : level;
+        level = entry != 0u ? gsVirtualEntryLevel(entry) : level;
         // Each try lands on the finest resident page over the receiver, or names its level: one but where the
         // receiver's offsets cross into a page another level holds.
         for (int attempt = 0; attempt < levels && level < levels; ++attempt) {
