@@ -121,6 +121,7 @@ void ShadowModule::attach(engine::ModuleHost& host) {
 void ShadowModule::detach() {
     releaseResources();
     samples_.reset();
+    pageMarkProgram_.reset();
     shadowBlock_.reset();
     samplers_.reset();
     jitter_.reset();
@@ -253,8 +254,12 @@ bool ShadowModule::fitVirtualMaps(const engine::FrameContext& frame, const FitVi
     if (!virtual_) {
         virtual_ = std::make_unique<VirtualShadowMaps>(settings_, plan_);
     }
+    if (!pageMarkProgram_) {
+        const std::array stages{host_->shaders().preprocess(GL_COMPUTE_SHADER, "shadows/pages.comp", {})};
+        pageMarkProgram_ = std::make_unique<engine::gl::Program>("shadows/pages.comp", stages);
+    }
     const std::vector<VirtualShadowMaps::Light> clipmaps = virtual_->update(
-        *host_, fit, directional, casters, boxes, samples_->depthTexture(), samples_->size());
+        *pageMarkProgram_, fit, directional, casters, boxes, samples_->depthTexture(), samples_->size());
     for (const VirtualShadowMaps::Light& clipmap : clipmaps) {
         if (slots_.size() + kClipmapLevels > static_cast<std::size_t>(kMaxMaps)) {
             std::cerr << "shadows: light " << clipmap.index << " casts no shadow this frame: its "

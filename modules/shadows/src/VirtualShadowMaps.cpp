@@ -1,7 +1,5 @@
 #include "VirtualShadowMaps.h"
 
-#include <engine/ShaderLibrary.h>
-
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -161,7 +159,7 @@ void VirtualShadowMaps::invalidateMovedCasters(const std::vector<Light>& lights,
 }
 
 std::vector<VirtualShadowMaps::Light>
-VirtualShadowMaps::update(engine::ModuleHost& host, const FitView& fit,
+VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
                           std::span<const engine::FrameLight> lights,
                           const std::map<engine::EntityId, Aabb>& casters, std::span<const Aabb> boxes,
                           GLuint depth, glm::ivec2 size) {
@@ -172,10 +170,6 @@ VirtualShadowMaps::update(engine::ModuleHost& host, const FitView& fit,
     const auto levelWords = static_cast<std::size_t>(side) * static_cast<std::size_t>(side) / 32;
     if (!requests_) {
         requests_.emplace(levelWords * kRequestLevels * 4, nullptr, GL_DYNAMIC_STORAGE_BIT);
-    }
-    if (!markProgram_) {
-        const std::array stages{host.shaders().preprocess(GL_COMPUTE_SHADER, "shadows/pages.comp", {})};
-        markProgram_ = std::make_unique<engine::gl::Program>("shadows/pages.comp", stages);
     }
     Aabb scene;
     for (const Aabb& box : boxes) {
@@ -215,7 +209,6 @@ VirtualShadowMaps::update(engine::ModuleHost& host, const FitView& fit,
         }
         const std::uint32_t zero = 0;
         glClearNamedBufferData(requests_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        const engine::gl::Program& mark = *markProgram_;
         mark.use();
         mark.set("uDepth", 0);
         mark.set("uSize", size);

@@ -38,11 +38,12 @@ public:
         int pageLayer = 0;
     };
 
-    /// @brief Marks the pages the view's depth image `depth` (of `size`, seen through `fit`) asks for, for
+    /// @brief Marks, with `mark` (shaders/shadows/pages.comp), the pages the view's depth image `depth` (of
+    /// `size`, seen through `fit`) asks for, for
     /// each light in `lights` (directional, shadow-casting), invalidates the pages of casters that moved
     /// (`casters`: each mesh entity's world box), allocates and uploads the page tables. Returns the lights'
     /// clipmaps, in order.
-    std::vector<Light> update(engine::ModuleHost& host, const FitView& fit,
+    std::vector<Light> update(const engine::gl::Program& mark, const FitView& fit,
                               std::span<const engine::FrameLight> lights,
                               const std::map<engine::EntityId, Aabb>& casters, std::span<const Aabb> boxes,
                               GLuint depth, glm::ivec2 size);
@@ -84,7 +85,6 @@ private:
     std::optional<engine::gl::TextureArray> pageTable_;
     int pageTableLights_ = 0;
     std::optional<engine::gl::Buffer> requests_;
-    std::unique_ptr<engine::gl::Program> markProgram_;
     std::map<int, LightState> lightStates_;
     std::map<engine::EntityId, Aabb> casters_; // last frame's
     std::vector<Light> lights_;                // this frame's

@@ -144,7 +144,9 @@ private:
     std::optional<FitView> fitView_;
     std::unique_ptr<VisibleSamples> samples_;    // directional maps fitted to samples only
     std::unique_ptr<VirtualShadowMaps> virtual_; // mapAllocation virtual only
-    bool virtualFrame_ = false;                  // this frame reads the virtual maps' atlas
+    // Compiled once while attached, not with each pool a settings change makes anew.
+    std::unique_ptr<engine::gl::Program> pageMarkProgram_;
+    bool virtualFrame_ = false; // this frame reads the virtual maps' atlas
     GLuint pageTableUnit_ = 0;
     bool warnedVirtualFallback_ = false;
     bool warnedPageBudget_ = false;
