@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <cmath>
 #include <limits>
 
@@ -218,6 +220,132 @@ TEST(BuildPageTable, PointsEveryPageAtTheFinestResidentOverIt) {
     EXPECT_EQ(entry(0, {-1, 0}), 0u); // negative pages have their own parents (-1 >> 1 = -1)
     EXPECT_EQ((coarse >> 24) & 63u, 2u);
     EXPECT_EQ(coarse & shadows::kPageTileMask, static_cast<std::uint32_t>(pool.tileOf(key(2, 0))));
+}
+
+TEST(VirtualFaceLevel, CoarsestMipWithATexelPerPixel) {
+    // Level-0 texels spanning a quarter pixel each way: level 2's span one.
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({4.0f, 0.0f}, {0.0f, 4.0f}, 4.0f, 1.0f, 8), 2);
+    // Aiming at 2 pixels a texel allows one level coarser.
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({4.0f, 0.0f}, {0.0f, 4.0f}, 4.0f, 2.0f, 8), 3);
+    // Magnified (a level-0 texel spans 3 pixels): the finest level, no finer.
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({1.0f / 3, 0.0f}, {0.0f, 1.0f / 3}, 1.0f / 3, 1.0f, 8), 0);
+    // Far away: clamped to the coarsest level.
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({1e6f, 0.0f}, {0.0f, 1e6f}, 1e6f, 1.0f, 8), 7);
+    // Grazing: the slope asks at most GS_VIRTUAL_SLOPE_OCTAVES below the pixel's own size.
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({64.0f, 0.0f}, {0.0f, 1e-4f}, 64.0f, 1.0f, 8),
+              6 - shadows::glsl::GS_VIRTUAL_SLOPE_OCTAVES);
+    // No derivative (a pixel facing away): by its size alone; an unbounded footprint with a target above one
+    // pixel stays unbounded.
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({0.0f, 0.0f}, {0.0f, 0.0f}, 8.0f, 1.0f, 8), 3);
+    EXPECT_EQ(shadows::glsl::gsVirtualFaceLevel({0.0f, 0.0f}, {0.0f, 0.0f}, 8.0f, 4.0f, 8), 5);
+}
+
+shadows::PerspectiveGeometry spotMap() {
+    shadows::PerspectiveGeometry result;
+    const glm::mat4 view = glm::lookAt(glm::vec3(1.0f, 5.0f, 2.0f), glm::vec3(0.0f), glm::vec3(0, 0, -1));
+    result.face = shadows::virtualPerspective(view, 1.2f, {0.7f, 9.0f});
+    result.pageSize = 128;
+    return result;
+}
+
+TEST(PerspectiveGeometry, LevelsGoDownToOnePage) {
+    shadows::PerspectiveGeometry map = spotMap();
+    EXPECT_EQ(map.levels(), 8); // 128 pages a side at level 0
+    map.pageSize = 32;
+    EXPECT_EQ(map.levels(), 10);
+    map.pageSize = 512;
+    EXPECT_EQ(map.levels(), 6);
+}
+
+TEST(PerspectiveGeometry, PagesAreCropsOfTheWholeMap) {
+    const shadows::PerspectiveGeometry map = spotMap();
+    ASSERT_TRUE(map.face.valid);
+    const int border = 5;
+    const float tile = 128.0f + 2.0f * border;
+    const glm::vec3 world(0.31f, 0.2f, -0.17f);
+    const glm::vec4 clip = map.face.worldToShadow * glm::vec4(world, 1.0f);
+    const glm::vec3 coord = glm::vec3(clip) / clip.w;
+    for (int level = 0; level < map.levels(); ++level) {
+        // The page under the point on this level, and where in it (in level texels) the point lies.
+        const float resolution = std::ldexp(static_cast<float>(shadows::kVirtualResolution), -level);
+        const glm::vec2 window = glm::vec2(coord) * resolution;
+        const glm::ivec2 page = glm::ivec2(glm::floor(window / 128.0f));
+        const shadows::LightProjection projection = map.pageProjection(level, page, border);
+        const glm::vec4 inClip = projection.worldToShadow * glm::vec4(world, 1.0f);
+        const glm::vec3 inPage = glm::vec3(inClip) / inClip.w;
+        const glm::vec2 expected = window - glm::vec2(page) * 128.0f + static_cast<float>(border);
+        EXPECT_NEAR(inPage.x * tile, expected.x, 2e-3f) << "level " << level;
+        EXPECT_NEAR(inPage.y * tile, expected.y, 2e-3f) << "level " << level;
+        // Every level stores the same depth, and a texel 2^level level-0 texels wide.
+        EXPECT_NEAR(inPage.z, coord.z, 1e-6f);
+        EXPECT_FLOAT_EQ(projection.texelScale, map.face.texelScale * std::ldexp(1.0f, level));
+        EXPECT_EQ(projection.depthRange, map.face.depthRange);
+        // The page's rectangle holds the point, its border included.
+        const glm::vec4 rect = map.pageRect(level, page, border);
+        EXPECT_LE(rect.x, coord.x);
+        EXPECT_GE(rect.z, coord.x);
+    }
+}
+
+TEST(VirtualPerspective, DepthRangeSnapsOutwardToQuarterOctaves) {
+    const glm::mat4 view(1.0f);
+    const shadows::LightProjection a = shadows::virtualPerspective(view, 1.0f, {0.7f, 9.0f});
+    const shadows::LightProjection b = shadows::virtualPerspective(view, 1.0f, {0.69f, 9.1f});
+    ASSERT_TRUE(a.valid);
+    EXPECT_EQ(a.depthRange, b.depthRange) << "a caster moving a little keeps the pages";
+    EXPECT_LE(a.depthRange.x, 0.7f);
+    EXPECT_GE(a.depthRange.y, 9.0f);
+    EXPECT_GT(a.depthRange.x, 0.7f / 1.19f);
+    EXPECT_LT(a.depthRange.y, 9.0f * 1.19f);
+    EXPECT_TRUE(a.perspective);
+    EXPECT_FLOAT_EQ(a.texelScale, 2.0f * std::tan(0.5f) / shadows::kVirtualResolution);
+    // Nothing to map: invalid, never a NaN matrix.
+    EXPECT_FALSE(shadows::virtualPerspective(view, 1.0f, {0.0f, 9.0f}).valid);
+    EXPECT_FALSE(shadows::virtualPerspective(view, 1.0f, {2.0f, 1.0f}).valid);
+    EXPECT_FALSE(
+        shadows::virtualPerspective(view, 1.0f, {1.0f, std::numeric_limits<float>::infinity()}).valid);
+    EXPECT_FALSE(
+        shadows::virtualPerspective(view, std::numeric_limits<float>::quiet_NaN(), {1.0f, 2.0f}).valid);
+}
+
+TEST(BuildPageTable, FacePagesFallBackToTheirMipAncestors) {
+    const shadows::PerspectiveGeometry map = spotMap();
+    PagePool pool(4);
+    // Face 2 of light 0: level 3's page (1, 0) covers level 0's pages x 8-15, y 0-7; level 0's (9, 2) is
+    // resident itself. Face 1's page (0, 0) of level 7 is another face's.
+    const PageKey coarse{0, 3, {1, 0}, 2};
+    const PageKey fine{0, 0, {9, 2}, 2};
+    pool.request(std::vector{coarse, fine, PageKey{0, 7, {0, 0}, 1}}, 1);
+    const std::vector<std::uint32_t> table = shadows::buildPageTable(pool, 0, 2, map);
+    std::vector<std::size_t> offsets{0};
+    for (int level = 0; level < map.levels(); ++level) {
+        const auto side = static_cast<std::size_t>(128 >> level);
+        offsets.push_back(offsets.back() + side * side);
+    }
+    ASSERT_EQ(table.size(), offsets.back());
+    const auto entry = [&](int level, glm::ivec2 page) {
+        return table[offsets[static_cast<std::size_t>(level)] +
+                     static_cast<std::size_t>(page.y * (128 >> level) + page.x)];
+    };
+    const std::uint32_t coarseEntry = shadows::pageTableEntry(3, pool.tileOf(coarse));
+    EXPECT_EQ(entry(0, {9, 2}), shadows::pageTableEntry(0, pool.tileOf(fine)));
+    EXPECT_EQ(entry(0, {15, 7}), coarseEntry);
+    EXPECT_EQ(entry(2, {2, 1}), coarseEntry);
+    EXPECT_EQ(entry(3, {1, 0}), coarseEntry);
+    EXPECT_EQ(entry(0, {7, 0}), 0u) << "level 3's page 0 is not resident";
+    EXPECT_EQ(entry(7, {0, 0}), 0u) << "face 1's page is not face 2's";
+}
+
+TEST(VirtualOverheadBytes, RequestsAndMipChainsOfTables) {
+    // 128 pages a side: 64 levels of 128² request bits, and chains of 128² + 64² + ... + 1 words.
+    const std::size_t requests = 128u * 128u * 64u / 8u;
+    std::size_t chain = 0;
+    for (std::size_t side = 128; side >= 1; side /= 2) {
+        chain += side * side * 4;
+    }
+    EXPECT_EQ(shadows::virtualOverheadBytes(128, 0), requests);
+    EXPECT_EQ(shadows::virtualOverheadBytes(128, 6), requests + 6 * chain);
+    EXPECT_GT(shadows::virtualOverheadBytes(32, 1), shadows::virtualOverheadBytes(128, 1));
 }
 
 TEST(VirtualSettings, RefuseBadPagesAndBudgets) {

@@ -168,7 +168,9 @@ std::vector<AccuracyCase> accuracyCases(bool full) {
         {"point, scene scale 100000", 1e5f, 1024, 1e3f, L::Point},
         {"4 cascades reference: scale 1, map 1024", 1.0f, 1024, 1e3f, L::Directional, 4},
         {"4 cascades, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 4},
-        {"virtual maps, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 1, 64}};
+        {"virtual maps, scene scale 100000", 1e5f, 1024, 1e3f, L::Directional, 1, 64},
+        {"virtual spot map, scene scale 100000", 1e5f, 1024, 1e3f, L::Spot, 1, 64},
+        {"virtual point faces, scene scale 100000", 1e5f, 1024, 1e3f, L::Point, 1, 64}};
     if (full) {
         list.push_back({"scene scale 1000", 1e3f});
         list.push_back({"map 2048", 1.0f, 2048});
@@ -186,7 +188,11 @@ std::vector<AccuracyCase> accuracyCases(bool full) {
         list.push_back({"virtual maps, scale 1", 1.0f, 1024, 1e3f, L::Directional, 1, 64});
         list.push_back({"virtual maps, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Directional, 1, 64});
         list.push_back({"virtual maps, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Directional, 1, 64});
-        list.push_back({"virtual maps, budget 1 MiB", 1.0f, 1024, 1e3f, L::Directional, 1, 1});
+        list.push_back({"virtual maps, budget 2 MiB", 1.0f, 1024, 1e3f, L::Directional, 1, 2});
+        list.push_back({"virtual spot map, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Spot, 1, 64});
+        list.push_back({"virtual spot map, camera near/far 1e6", 1.0f, 1024, 1e6f, L::Spot, 1, 64});
+        list.push_back({"virtual point faces, scene scale 0.001", 1e-3f, 1024, 1e3f, L::Point, 1, 64});
+        list.push_back({"virtual point faces, budget 4 MiB", 1.0f, 1024, 1e3f, L::Point, 1, 4});
     }
     return list;
 }
@@ -232,8 +238,6 @@ bool accuracySweep(bool full, const std::filesystem::path& imageFolder, std::ost
             if (c.virtualBudgetMiB > 0) {
                 settings.mapAllocation = shadows::MapAllocation::Virtual;
                 settings.virtualBudgetMiB = c.virtualBudgetMiB;
-                // A page of 32-bit moments with its border needs more than 1 MiB at 128².
-                settings.virtualPageSize = c.virtualBudgetMiB < 2 ? 64 : settings.virtualPageSize;
             }
             const shadowbench::Accuracy accuracy = bench.measure(prepared, settings);
             const shadowbench::ShadowMetrics& m = accuracy.metrics;

@@ -16,12 +16,21 @@ inline constexpr int kMaxMaps = 24;
 inline constexpr GLuint kShadowBlockBinding = 1;
 
 /// @brief How a light's maps are laid out (GS_SHADOW_LIGHT_* in block.glsl).
-enum class LightMapsKind : std::int32_t { None = 0, Single = 1, Cascades = 2, Cube = 3, Virtual = 4 };
+enum class LightMapsKind : std::int32_t {
+    None = 0,
+    Single = 1,
+    Cascades = 2,
+    Cube = 3,
+    Virtual = 4,
+    VirtualFaces = 5
+};
 
 /// @brief std140 mirror of GsShadowLightMaps: which maps a light has and how a fragment picks one.
 struct alignas(16) LightMapsBlock {
-    /// x: LightMapsKind, y: cascade count or clipmap levels; Virtual: z the first level's slot (the levels'
-    /// slots follow it), w its page-table layer.
+    /// x: LightMapsKind, y: cascade count, clipmap levels or mip levels; Virtual: z the first level's slot
+    /// (the levels' slots follow it), w its page-table layer; VirtualFaces: z 1 (a spot map, `slots.x`) or 6
+    /// (cube faces, as Cube), w the first face's page-table layer (the faces' follow it, their levels its mip
+    /// levels).
     glm::ivec4 kind;
     /// Map slot of the single map (x), of each cascade, or of cube faces 0–3; -1: not drawn this frame.
     glm::ivec4 slots;

@@ -227,24 +227,13 @@ bool ShadowModule::fitVirtualMaps(const engine::FrameContext& frame, const FitVi
                                   std::span<const Aabb> boxes,
                                   const std::map<engine::EntityId, Aabb>& casters,
                                   std::vector<LightMapsBlock>& lights) {
-    std::vector<engine::FrameLight> directional;
+    std::vector<engine::FrameLight> casting;
     for (const engine::FrameLight& light : frame.lights) {
-        if (!light.light.castsShadows) {
-            continue;
+        if (light.light.castsShadows) {
+            casting.push_back(light);
         }
-        if (light.light.type != engine::LightType::Directional) {
-            // One sampler holds every map a lookup reads: the atlas, or the fitted maps' array.
-            if (!warnedVirtualFallback_) {
-                std::cerr
-                    << "shadows: virtual maps serve directional lights only, and this frame has a spot or "
-                       "point light casting shadows: every light uses fitted maps while it does\n";
-                warnedVirtualFallback_ = true;
-            }
-            return false;
-        }
-        directional.push_back(light);
     }
-    if (directional.empty()) {
+    if (casting.empty()) {
         return false;
     }
     if (!samples_) {
@@ -258,23 +247,55 @@ bool ShadowModule::fitVirtualMaps(const engine::FrameContext& frame, const FitVi
         const std::array stages{host_->shaders().preprocess(GL_COMPUTE_SHADER, "shadows/pages.comp", {})};
         pageMarkProgram_ = std::make_unique<engine::gl::Program>("shadows/pages.comp", stages);
     }
-    const std::vector<VirtualShadowMaps::Light> clipmaps = virtual_->update(
-        *pageMarkProgram_, fit, directional, casters, boxes, samples_->depthTexture(), samples_->size());
-    for (const VirtualShadowMaps::Light& clipmap : clipmaps) {
-        if (slots_.size() + kClipmapLevels > static_cast<std::size_t>(kMaxMaps)) {
-            std::cerr << "shadows: light " << clipmap.index << " casts no shadow this frame: its "
-                      << kClipmapLevels << " clipmap levels do not fit the " << kMaxMaps
-                      << " map slots beside the others\n";
+    const std::vector<VirtualShadowMaps::Light> virtualLights = virtual_->update(
+        *pageMarkProgram_, fit, casting, casters, boxes, samples_->depthTexture(), samples_->size());
+    static_assert(kPageTableLayers == kMaxMaps, "a page-table layer per map slot");
+    for (const engine::FrameLight& light : casting) {
+        if (std::none_of(
+                virtualLights.begin(), virtualLights.end(),
+                [&](const VirtualShadowMaps::Light& served) { return served.index == light.index; })) {
+            std::cerr << "shadows: light " << light.index << " casts no shadow this frame: its virtual maps' "
+                      << "page tables do not fit the " << kPageTableLayers << " layers beside the others\n";
+        }
+    }
+    for (const VirtualShadowMaps::Light& light : virtualLights) {
+        LightMapsBlock& maps = lights[static_cast<std::size_t>(light.index)];
+        int needed = light.faceCount == 0 ? kClipmapLevels : 0;
+        for (int face = 0; face < light.faceCount; ++face) {
+            needed += light.faces[static_cast<std::size_t>(face)].face.valid ? 1 : 0;
+        }
+        if (slots_.size() + static_cast<std::size_t>(needed) > static_cast<std::size_t>(kMaxMaps)) {
+            std::cerr << "shadows: light " << light.index << " casts no shadow this frame: its " << needed
+                      << " virtual maps do not fit the " << kMaxMaps << " map slots beside the others\n";
             continue;
         }
-        const int first = static_cast<int>(slots_.size());
-        for (int level = 0; level < kClipmapLevels; ++level) {
-            slots_.push_back({clipmap.index,
-                              clipmap.geometry.levelProjection(clipmap.geometry.finestLevel + level),
-                              kVirtualResolution});
+        if (light.faceCount == 0) {
+            const int first = static_cast<int>(slots_.size());
+            for (int level = 0; level < kClipmapLevels; ++level) {
+                slots_.push_back({light.index,
+                                  light.geometry.levelProjection(light.geometry.finestLevel + level),
+                                  kVirtualResolution});
+            }
+            maps.kind =
+                glm::ivec4(static_cast<int>(LightMapsKind::Virtual), kClipmapLevels, first, light.pageLayer);
+            continue;
         }
-        lights[static_cast<std::size_t>(clipmap.index)].kind =
-            glm::ivec4(static_cast<int>(LightMapsKind::Virtual), kClipmapLevels, first, clipmap.pageLayer);
+        // A spot map or cube faces in the fitted layout's slots; the levels are the mip levels of each.
+        for (int face = 0; face < light.faceCount; ++face) {
+            const LightProjection& projection = light.faces[static_cast<std::size_t>(face)].face;
+            int slot = -1;
+            if (projection.valid) {
+                slot = static_cast<int>(slots_.size());
+                slots_.push_back({light.index, projection, kVirtualResolution});
+            }
+            if (face < 4) {
+                maps.slots[face] = slot;
+            } else {
+                maps.faceSlots[face - 4] = slot;
+            }
+        }
+        maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::VirtualFaces), light.levels(), light.faceCount,
+                               light.pageLayer);
     }
     const VirtualPageStats& pages = virtual_->stats();
     if ((pages.coarsened > 0 || pages.refused > 0) && !warnedPageBudget_) {
@@ -390,9 +411,12 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
 engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBlock>& lights) const {
     // llvmpipe runs both sides of every branch under a mask, so a layout compiled in costs its lookups on
     // every fragment whether a light uses it or not; only this frame's layouts are compiled.
-    constexpr std::array<std::string_view, 5> kDefines{"", "GS_SHADOW_LAYOUT_SINGLE",
-                                                       "GS_SHADOW_LAYOUT_CASCADES", "GS_SHADOW_LAYOUT_CUBE",
-                                                       "GS_SHADOW_LAYOUT_VIRTUAL"};
+    constexpr std::array<std::string_view, 6> kDefines{"",
+                                                       "GS_SHADOW_LAYOUT_SINGLE",
+                                                       "GS_SHADOW_LAYOUT_CASCADES",
+                                                       "GS_SHADOW_LAYOUT_CUBE",
+                                                       "GS_SHADOW_LAYOUT_VIRTUAL",
+                                                       "GS_SHADOW_LAYOUT_VIRTUAL_FACES"};
     engine::ShaderVariantKey key = 0;
     for (const LightMapsBlock& maps : lights) {
         if (maps.kind.x > 0) {

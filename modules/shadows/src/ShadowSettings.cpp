@@ -34,10 +34,12 @@ std::vector<std::string> ShadowSettings::validate() const {
     if (problems.empty() && mapAllocation == MapAllocation::Virtual) {
         const ShadowPlan plan = ShadowPlan::resolve(*this);
         const std::size_t tile = virtualTileBytes(plan, virtualPageSize);
-        if ((static_cast<std::size_t>(virtualBudgetMiB) << 20) < tile) {
+        const std::size_t requests = virtualOverheadBytes(virtualPageSize, 0);
+        if ((static_cast<std::size_t>(virtualBudgetMiB) << 20) < tile + requests) {
             problems.push_back("virtualBudgetMiB " + std::to_string(virtualBudgetMiB) +
                                " holds no page: one page of this technique with its border takes " +
-                               std::to_string(tile) + " bytes");
+                               std::to_string(tile) + " bytes, the page requests " +
+                               std::to_string(requests));
         }
         if (plan.blursMoments) {
             problems.push_back(

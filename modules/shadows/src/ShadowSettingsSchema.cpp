@@ -217,16 +217,17 @@ const std::vector<SettingRow>& rows() {
          "no visible sample falls back to bounds, saying so once.",
          choice<DirectionalFit, &S::directionalFit>(), always, "--fit"},
         {"mapAllocation", "", "map allocation",
-         "How directional lights' texels are allocated. fitted: whole maps of `resolution`² fitted to the "
-         "view. virtual: a clipmap of 16k² levels, each twice the radius of the last, whose pages are drawn "
-         "only where visible pixels ask for them, at the level whose texels are no larger than a pixel there "
-         "(the receiver's slope to the light included), in a pool of virtualBudgetMiB, cached while casters "
-         "and light stay put. Over budget, pages fall back to coarser levels and the stats say so. Spot and "
-         "point lights keep fitted maps.",
+         "How shadow texels are allocated. fitted: whole maps of `resolution`² fitted to the view. virtual: "
+         "per directional light a clipmap of 16k² levels, each twice the radius of the last; per spot light, "
+         "and per face of a point light, one 16k² map with mip levels. Their pages are drawn only where "
+         "visible pixels ask for them, at the level whose texels are no larger than a pixel there (the "
+         "receiver's slope to the light included), in a pool of virtualBudgetMiB, cached while casters and "
+         "light stay put. Over budget, pages fall back to coarser levels and the stats say so.",
          choice<MapAllocation, &S::mapAllocation>(), always, "--maps"},
         {"virtualBudgetMiB", "MiB", "page budget",
-         "Memory of the virtual maps' page pool (every light's pages, their borders and the technique's "
-         "stored values); it must hold at least one page.",
+         "Memory of the virtual maps: the page pool (every light's pages, their borders and the technique's "
+         "stored values), the lights' page tables and the page requests; it must hold at least one page "
+         "beside them.",
          IntSetting{&S::virtualBudgetMiB, [](const S&) { return fixed({.min = 1, .max = 4096}); }},
          virtualMaps, "--page-budget"},
         {"virtualPageSize", "texels", "page size", "Side of a virtual page.",

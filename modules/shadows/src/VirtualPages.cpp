@@ -1,6 +1,9 @@
 #include <shadows/VirtualPages.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -38,11 +41,22 @@ std::size_t virtualTileBytes(const ShadowPlan& plan, int pageSize) {
     return side * side * perTexel;
 }
 
+std::size_t virtualOverheadBytes(int pageSize, int tableLayers) {
+    const auto side = static_cast<std::size_t>(kVirtualResolution / std::max(pageSize, 1));
+    const std::size_t requests = side * side * kRequestLevels / 8;
+    std::size_t chain = 0;
+    for (std::size_t level = side; level >= 1; level /= 2) {
+        chain += level * level * 4;
+    }
+    return requests + chain * static_cast<std::size_t>(std::max(tableLayers, 0));
+}
+
 std::size_t PageKeyHash::operator()(const PageKey& key) const {
     std::uint64_t h = static_cast<std::uint32_t>(key.light);
     h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.level);
     h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.page.x);
     h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.page.y);
+    h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(key.face);
     return static_cast<std::size_t>(h ^ (h >> 29));
 }
 
@@ -90,6 +104,58 @@ LightProjection ClipmapGeometry::projectionOver(glm::dvec2 low, glm::dvec2 high,
     result.projection = glm::mat4(textureToClip * toShadow);
     result.worldToShadow = glm::mat4(toShadow * glm::dmat4(lightView));
     result.texelScale = static_cast<float>(texelSize(level));
+    result.valid = true;
+    return result;
+}
+
+int PerspectiveGeometry::levels() const {
+    return std::bit_width(static_cast<unsigned>(std::max(pagesPerSide(), 1)));
+}
+
+glm::vec4 PerspectiveGeometry::pageRect(int level, glm::ivec2 page, int borderTexels) const {
+    const double texel = std::ldexp(1.0, level) / kVirtualResolution;
+    const glm::dvec2 low = glm::dvec2(page) * (texel * pageSize) - texel * borderTexels;
+    const glm::dvec2 high = glm::dvec2(page + 1) * (texel * pageSize) + texel * borderTexels;
+    return {low.x, low.y, high.x, high.y};
+}
+
+LightProjection PerspectiveGeometry::pageProjection(int level, glm::ivec2 page, int borderTexels) const {
+    const glm::dvec4 rect(pageRect(level, page, borderTexels));
+    const glm::dvec2 low(rect.x, rect.y);
+    const glm::dvec2 size = glm::dvec2(rect.z, rect.w) - low;
+    // The crop of texture rectangle [low, low + size]: x' / w = 2 (x_tex - low) / size - 1 with x_tex =
+    // (x / w + 1) / 2, so x' = (x + w (1 - 2 low)) / size - w, linear in clip space.
+    glm::dmat4 crop(1.0);
+    crop[0][0] = 1.0 / size.x;
+    crop[1][1] = 1.0 / size.y;
+    crop[3][0] = (1.0 - 2.0 * low.x) / size.x - 1.0;
+    crop[3][1] = (1.0 - 2.0 * low.y) / size.y - 1.0;
+    const glm::dmat4 clipToTexture(glm::dvec4(0.5, 0, 0, 0), glm::dvec4(0, 0.5, 0, 0),
+                                   glm::dvec4(0, 0, 0.5, 0), glm::dvec4(0.5, 0.5, 0.5, 1));
+    LightProjection result = face;
+    const glm::dmat4 projection = crop * glm::dmat4(face.projection);
+    result.projection = glm::mat4(projection);
+    result.worldToShadow = glm::mat4(clipToTexture * projection * glm::dmat4(face.view));
+    result.texelScale = face.texelScale * std::ldexp(1.0f, level);
+    return result;
+}
+
+LightProjection virtualPerspective(const glm::mat4& view, float fov, glm::vec2 depthRange) {
+    LightProjection result;
+    if (!(depthRange.x > 0.0f && depthRange.y > depthRange.x && std::isfinite(depthRange.y) && fov > 0.0f &&
+          fov < 3.1f)) {
+        return result;
+    }
+    const float near = std::exp2(std::floor(4.0f * std::log2(depthRange.x)) / 4.0f);
+    const float far = std::exp2(std::ceil(4.0f * std::log2(depthRange.y)) / 4.0f);
+    result.view = view;
+    result.perspective = true;
+    result.projection = glm::perspective(fov, 1.0f, near, far);
+    result.depthRange = {near, far};
+    const glm::mat4 clipToTexture(glm::vec4(0.5f, 0, 0, 0), glm::vec4(0, 0.5f, 0, 0),
+                                  glm::vec4(0, 0, 0.5f, 0), glm::vec4(0.5f, 0.5f, 0.5f, 1));
+    result.worldToShadow = clipToTexture * result.projection * view;
+    result.texelScale = 2.0f * std::tan(0.5f * fov) / static_cast<float>(kVirtualResolution);
     result.valid = true;
     return result;
 }
@@ -202,31 +268,14 @@ PagePool::FrameResult PagePool::request(std::span<const PageKey> requests, std::
 }
 
 int PagePool::invalidateLight(int light) {
-    int dropped = 0;
-    for (int tile = 0; tile < static_cast<int>(tiles_.size()); ++tile) {
-        const Tile& record = tiles_[static_cast<std::size_t>(tile)];
-        if (record.used && record.key.light == light) {
-            release(tile);
-            ++dropped;
-        }
-    }
-    return dropped;
+    return invalidateWhere(light, [](const PageKey&) { return true; });
 }
 
 int PagePool::invalidate(int light, const ClipmapGeometry& geometry, glm::vec4 rect, int borderTexels) {
-    int dropped = 0;
-    for (int tile = 0; tile < static_cast<int>(tiles_.size()); ++tile) {
-        const Tile& record = tiles_[static_cast<std::size_t>(tile)];
-        if (!record.used || record.key.light != light) {
-            continue;
-        }
-        const glm::vec4 page = geometry.pageRect(record.key.level, record.key.page, borderTexels);
-        if (page.x <= rect.z && rect.x <= page.z && page.y <= rect.w && rect.y <= page.w) {
-            release(tile);
-            ++dropped;
-        }
-    }
-    return dropped;
+    return invalidateWhere(light, [&](const PageKey& key) {
+        const glm::vec4 page = geometry.pageRect(key.level, key.page, borderTexels);
+        return page.x <= rect.z && rect.x <= page.z && page.y <= rect.w && rect.y <= page.w;
+    });
 }
 
 int PagePool::tileOf(const PageKey& key) const {
@@ -274,6 +323,44 @@ std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, const
                 if (glm::all(glm::greaterThanEqual(parent, glm::ivec2(0))) &&
                     glm::all(glm::lessThan(parent, glm::ivec2(side)))) {
                     entry = parentLayer[static_cast<std::size_t>(parent.y * side + parent.x)];
+                }
+            }
+        }
+    }
+    return table;
+}
+
+std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, int face,
+                                          const PerspectiveGeometry& geometry) {
+    const int levels = geometry.levels();
+    // Level m's (pagesPerSide >> m)² entries start where the finer levels' end.
+    std::vector<std::size_t> offsets(static_cast<std::size_t>(levels) + 1, 0);
+    for (int level = 0; level < levels; ++level) {
+        const auto side = static_cast<std::size_t>(geometry.pagesPerSide() >> level);
+        offsets[static_cast<std::size_t>(level) + 1] = offsets[static_cast<std::size_t>(level)] + side * side;
+    }
+    std::vector<std::uint32_t> table(offsets.back(), 0u);
+    const auto at = [&](int level, glm::ivec2 page) -> std::uint32_t& {
+        const int side = geometry.pagesPerSide() >> level;
+        return table[offsets[static_cast<std::size_t>(level)] +
+                     static_cast<std::size_t>(page.y * side + page.x)];
+    };
+    pool.forEachResident([&](const PageKey& key, int tile) {
+        if (key.light != light || key.face != face || key.level < 0 || key.level >= levels ||
+            glm::any(glm::lessThan(key.page, glm::ivec2(0))) ||
+            glm::any(glm::greaterThanEqual(key.page, glm::ivec2(geometry.pagesPerSide() >> key.level)))) {
+            return;
+        }
+        at(key.level, key.page) = pageTableEntry(key.level, tile);
+    });
+    // Coarse to fine: a page with no texels of its own takes its parent's entry (page p's parent is p / 2).
+    for (int level = levels - 2; level >= 0; --level) {
+        const int side = geometry.pagesPerSide() >> level;
+        for (int y = 0; y < side; ++y) {
+            for (int x = 0; x < side; ++x) {
+                std::uint32_t& entry = at(level, {x, y});
+                if (entry == 0u) {
+                    entry = at(level + 1, {x >> 1, y >> 1});
                 }
             }
         }

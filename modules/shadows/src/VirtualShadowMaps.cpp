@@ -6,6 +6,8 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <iostream>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -20,8 +22,28 @@ glm::vec4 lightRect(const glm::mat4& lightView, const Aabb& box) {
     return {light.min.x, light.min.y, light.max.x, light.max.y};
 }
 
-glm::vec4 unite(const glm::vec4& a, const glm::vec4& b) {
-    return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.z, b.z), std::max(a.w, b.w)};
+/// The shadow texture rectangle (min x, min y, max x, max y) of a world box in a perspective map; nullopt
+/// when the box straddles the light's plane (its image is unbounded), an empty one when it lies behind it.
+std::optional<glm::vec4> shadowRect(const glm::mat4& worldToShadow, const Aabb& box) {
+    glm::vec4 rect(std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                   std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest());
+    int behind = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 point((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                              (corner & 4) ? box.max.z : box.min.z);
+        const glm::vec4 clip = worldToShadow * glm::vec4(point, 1.0f);
+        if (!(clip.w > 0.0f)) {
+            ++behind;
+            continue;
+        }
+        const glm::vec2 coord = glm::vec2(clip) / clip.w;
+        rect = {std::min(rect.x, coord.x), std::min(rect.y, coord.y), std::max(rect.z, coord.x),
+                std::max(rect.w, coord.y)};
+    }
+    if (behind == 8) {
+        return glm::vec4(2.0f, 2.0f, -2.0f, -2.0f); // wholly behind the light: overlaps no page
+    }
+    return behind > 0 ? std::nullopt : std::optional<glm::vec4>(rect);
 }
 
 } // namespace
@@ -29,13 +51,25 @@ glm::vec4 unite(const glm::vec4& a, const glm::vec4& b) {
 VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const ShadowPlan& plan)
     : plan_(plan), pageSize_(settings.virtualPageSize), border_(virtualPageBorderTexels(plan)),
       tile_(settings.virtualPageSize + 2 * virtualPageBorderTexels(plan)),
-      texelPixels_(settings.virtualTexelPixels), pool_(0) {
-    const std::size_t budget = static_cast<std::size_t>(settings.virtualBudgetMiB) << 20;
-    const std::size_t tiles = budget / virtualTileBytes(plan, pageSize_);
-    if (tiles < 1) {
+      texelPixels_(settings.virtualTexelPixels),
+      budget_(static_cast<std::size_t>(settings.virtualBudgetMiB) << 20), pool_(0) {
+    if (budget_ < virtualOverheadBytes(pageSize_, 0) + virtualTileBytes(plan, pageSize_)) {
         throw std::invalid_argument("shadow settings: virtualBudgetMiB " +
                                     std::to_string(settings.virtualBudgetMiB) + " holds no page of " +
-                                    std::to_string(tile_) + "² texels");
+                                    std::to_string(tile_) + "² texels beside the page requests");
+    }
+}
+
+void VirtualShadowMaps::allocatePool(int tableLayers) {
+    const std::size_t overhead = virtualOverheadBytes(pageSize_, tableLayers);
+    const std::size_t tileBytes = virtualTileBytes(plan_, pageSize_);
+    std::size_t tiles = budget_ > overhead ? (budget_ - overhead) / tileBytes : 0;
+    if (tiles < 1) {
+        std::cerr << "shadows: virtualBudgetMiB " << (budget_ >> 20)
+                  << " holds no page beside the page tables "
+                  << "of this frame's lights (" << tableLayers << " layers, " << overhead
+                  << " bytes with the requests): one page is used, beyond the budget\n";
+        tiles = 1;
     }
     GLint maxSize = 0;
     GLint maxLayers = 0;
@@ -47,18 +81,19 @@ VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const Shado
     layers_ = static_cast<int>(
         std::clamp<std::size_t>(tiles / perLayer, 1, static_cast<std::size_t>(std::max(maxLayers, 1))));
     pool_ = PagePool(static_cast<int>(perLayer) * layers_);
-    ShadowPlan atlasPlan = plan;
+    ShadowPlan atlasPlan = plan_;
     atlasPlan.blursMoments = false; // pages are not blurred (ShadowSettings::validate refuses a blur radius)
     atlas_ = std::make_unique<ShadowMapArray>(tilesPerRow_ * tile_, layers_, atlasPlan);
+    poolTableLayers_ = tableLayers;
+    pageTable_.reset();
+    uploaded_.clear();
 }
 
 std::size_t VirtualShadowMaps::bytes() const {
-    std::size_t total = atlas_->bytes(plan_);
+    std::size_t total = atlas_ ? atlas_->bytes(plan_) : 0;
     if (pageTable_) {
-        const auto side = static_cast<std::size_t>(kVirtualResolution / pageSize_);
-        total += side * side * static_cast<std::size_t>(pageTable_->layers()) * 4;
-    }
-    if (requests_) {
+        total += virtualOverheadBytes(pageSize_, pageTable_->layers());
+    } else if (requests_) {
         total += requests_->size();
     }
     return total;
@@ -73,86 +108,253 @@ glm::vec4 VirtualShadowMaps::pageUniform() const {
             1.0f / static_cast<float>(tilesPerRow_ * tile_)};
 }
 
-std::vector<PageKey> VirtualShadowMaps::requestedPages(int light, ClipmapGeometry& geometry, int levelBase) {
-    const int side = geometry.pagesPerSide();
+VirtualShadowMaps::Light VirtualShadowMaps::fitLight(const engine::FrameLight& light, const FitView& fit,
+                                                     std::span<const Aabb> boxes) {
+    Light entry;
+    entry.index = light.index;
+    const glm::vec3 camera(glm::inverse(fit.view)[3]);
+    LightState& state = lightStates_[light.index];
+    if (light.light.type == engine::LightType::Directional) {
+        ClipmapGeometry& geometry = entry.geometry;
+        geometry.lightView = lightView(light.direction);
+        geometry.pageSize = pageSize_;
+        geometry.camera = glm::vec2(geometry.lightView * glm::vec4(camera, 1.0f));
+        geometry.depth = depthRangeFor(geometry.lightView, boxes);
+        // A turned light or a new depth range changes every texel of the light's pages.
+        if (state.faceCount != 0 || state.direction != light.direction || state.depth != geometry.depth) {
+            stats_.invalidated += pool_.invalidateLight(light.index);
+            state = {};
+            state.faceCount = 0;
+            state.direction = light.direction;
+            state.depth = geometry.depth;
+        }
+        return entry;
+    }
+    entry.faceCount = light.light.type == engine::LightType::Spot ? 1 : kCubeFaces;
+    if (state.faceCount != entry.faceCount) {
+        stats_.invalidated += pool_.invalidateLight(light.index);
+        state = {};
+        state.faceCount = entry.faceCount;
+    }
+    const auto faceProjection = [&](int face) {
+        LightProjection fitted;
+        if (entry.faceCount == 1) {
+            fitted = fitSpotLight(light.position, light.direction, light.light.outerConeAngle,
+                                  light.light.range, boxes, kVirtualResolution);
+        } else {
+            // Wide enough that the coarsest level's kernel, reaching the border in its own texels past the
+            // face's edge, still reads this face (cubeFaceFieldOfView).
+            const float margin = static_cast<float>(border_) *
+                                 std::ldexp(1.0f, PerspectiveGeometry{{}, pageSize_}.levels() - 1);
+            fitted = fitPointLightFace(light.position, face, light.light.range, fit.projection * fit.view,
+                                       boxes, kVirtualResolution, margin);
+        }
+        if (!fitted.valid) {
+            return fitted;
+        }
+        const float fov = 2.0f * std::atan(0.5f * fitted.texelScale * static_cast<float>(kVirtualResolution));
+        return virtualPerspective(fitted.view, fov, fitted.depthRange);
+    };
+    for (int face = 0; face < entry.faceCount; ++face) {
+        PerspectiveGeometry& geometry = entry.faces[static_cast<std::size_t>(face)];
+        geometry.pageSize = pageSize_;
+        geometry.face = faceProjection(face);
+        if (!geometry.face.valid) {
+            continue;
+        }
+        // A moved light, a turned spot or a new depth range changes every texel of the face's pages.
+        std::optional<PerspectiveGeometry>& known = state.faces[static_cast<std::size_t>(face)];
+        if (known && known->face.worldToShadow != geometry.face.worldToShadow) {
+            stats_.invalidated +=
+                pool_.invalidateWhere(light.index, [&](const PageKey& key) { return key.face == face; });
+        }
+        known = geometry;
+    }
+    return entry;
+}
+
+VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(const engine::gl::Program& mark, Light& light,
+                                                        const FitView& fit, int levelBase, glm::ivec2 size) {
+    const int side = kVirtualResolution / pageSize_;
+    const glm::mat4 cameraWorld = glm::inverse(fit.view);
+    const glm::vec3 camera(cameraWorld[3]);
+    ClipmapGeometry& geometry = light.geometry;
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(requests_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    mark.use();
+    mark.set("uDepth", 0);
+    mark.set("uSize", size);
+    mark.set("uClipToWorld", glm::inverse(fit.projection * fit.view));
+    glUniform3fv(mark.uniformLocation("uCamera"), 1, glm::value_ptr(camera));
+    mark.set("uPageSize", pageSize_);
+    mark.set("uPagesPerSide", side);
+    glUniform1f(mark.uniformLocation("uReach"), static_cast<float>(border_));
+    glUniform1f(mark.uniformLocation("uTexelPixels"), texelPixels_);
+    mark.set("uFaces", light.faceCount);
+    if (light.faceCount == 0) {
+        std::array<glm::ivec2, kRequestLevels> origins{};
+        for (int level = 0; level < kRequestLevels; ++level) {
+            origins[static_cast<std::size_t>(level)] = geometry.windowOrigin(levelBase + level);
+        }
+        mark.set("uWorldToLight", geometry.lightView);
+        const glm::vec3 toLight =
+            -glm::normalize(glm::vec3(glm::inverse(geometry.lightView) * glm::vec4(0, 0, -1, 0)));
+        glUniform3fv(mark.uniformLocation("uToLight"), 1, glm::value_ptr(toLight));
+        mark.set("uLevelBase", levelBase);
+        glUniform2iv(mark.uniformLocation("uWindowOrigin"), kRequestLevels, glm::value_ptr(origins[0]));
+    } else {
+        std::array<glm::mat4, kCubeFaces> faces{};
+        int mask = 0;
+        for (int face = 0; face < light.faceCount; ++face) {
+            const LightProjection& projection = light.faces[static_cast<std::size_t>(face)].face;
+            if (projection.valid) {
+                faces[static_cast<std::size_t>(face)] = projection.worldToShadow;
+                mask |= 1 << face;
+            }
+        }
+        glUniformMatrix4fv(mark.uniformLocation("uFaceToShadow"), kCubeFaces, GL_FALSE,
+                           glm::value_ptr(faces[0]));
+        mark.set("uFaceMask", mask);
+        mark.set("uFaceLevels", light.levels());
+        glUniform3fv(mark.uniformLocation("uLightPosition"), 1, glm::value_ptr(light.position));
+        glUniform3fv(mark.uniformLocation("uSpotDirection"), 1, glm::value_ptr(light.direction));
+        glUniform1f(mark.uniformLocation("uConeCosine"), light.coneCosine);
+        glUniform1f(mark.uniformLocation("uRange"), light.range);
+        glUniform1f(mark.uniformLocation("uTexelScale"),
+                    light.faces[0].face.valid ? light.faces[0].face.texelScale : 0.0f);
+    }
+    glBindTextureUnit(0, samplesDepth_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, requests_->id());
+    // 8x8 invocations a group, each marking a 4x4 block of pixels (pages.comp).
+    const glm::ivec2 groups = (size + glm::ivec2(31)) / 32;
+    glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+
     const auto levelBits = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
     std::vector<std::uint32_t> words(requests_->size() / 4);
     glGetNamedBufferSubData(requests_->id(), 0, static_cast<GLsizeiptr>(requests_->size()), words.data());
-    std::vector<PageKey> pages;
+    PageSet pages;
     int finest = levelBase + kRequestLevels;
     int coarsest = levelBase - 1;
+    std::vector<PageKey> keys;
     for (std::size_t word = 0; word < words.size(); ++word) {
         for (std::uint32_t bits = words[word]; bits != 0u; bits &= bits - 1u) {
             const std::size_t bit = word * 32 + static_cast<std::size_t>(std::countr_zero(bits));
-            const int level = levelBase + static_cast<int>(bit / levelBits);
+            const int index = static_cast<int>(bit / levelBits);
             const auto local = static_cast<int>(bit % levelBits);
-            pages.push_back(
-                {light, level, geometry.windowOrigin(level) + glm::ivec2(local % side, local / side)});
+            const glm::ivec2 page(local % side, local / side);
+            if (light.faceCount > 0) {
+                pages.insert({index % light.levels(), index / light.levels(), page.y, page.x});
+                continue;
+            }
+            const int level = levelBase + index;
+            keys.push_back({light.index, level, geometry.windowOrigin(level) + page});
             finest = std::min(finest, level);
             coarsest = std::max(coarsest, level);
         }
     }
-    if (pages.empty()) {
+    if (light.faceCount > 0) {
+        return pages;
+    }
+    if (keys.empty()) {
         geometry.finestLevel = levelBase;
         return pages;
     }
     // The clipmap spans kClipmapLevels levels up to the coarsest asked for; finer requests read the finest
     // level's page over them.
     geometry.finestLevel = std::max(finest, coarsest - kClipmapLevels + 1);
-    std::set<std::tuple<int, int, int>> unique; // level, y, x
-    for (const PageKey& page : pages) {
-        const int shift = std::max(geometry.finestLevel - page.level, 0);
-        unique.insert({page.level + shift, page.page.y >> shift, page.page.x >> shift});
-    }
-    // Over budget, the finest level's requests give way to their parents until the pool holds them all.
-    const auto tiles = static_cast<std::size_t>(pool_.tiles());
-    const std::size_t asked = unique.size();
-    while (unique.size() > tiles) {
-        const int level = std::get<0>(*unique.begin());
-        if (level >= geometry.finestLevel + kClipmapLevels - 1) {
-            break; // the coarsest level alone exceeds the pool: the rest is refused (and reported)
-        }
-        std::set<std::tuple<int, int, int>> coarser;
-        for (const auto& [l, y, x] : unique) {
-            coarser.insert(l == level ? std::tuple{l + 1, y >> 1, x >> 1} : std::tuple{l, y, x});
-        }
-        unique.swap(coarser);
-    }
-    stats_.coarsened += static_cast<int>(asked - unique.size());
-    pages.clear();
-    // Coarse to fine, so that if the pool still runs out, the coarse pages stay.
-    for (auto it = unique.rbegin(); it != unique.rend(); ++it) {
-        const auto& [level, y, x] = *it;
-        pages.push_back({light, level, {x, y}});
+    for (const PageKey& key : keys) {
+        const int shift = std::max(geometry.finestLevel - key.level, 0);
+        pages.insert({key.level + shift, 0, key.page.y >> shift, key.page.x >> shift});
     }
     return pages;
+}
+
+int VirtualShadowMaps::coarsenToFit(std::vector<PageSet>& requests) const {
+    const auto tiles = static_cast<std::size_t>(pool_.tiles());
+    const auto total = [&] {
+        std::size_t sum = 0;
+        for (const PageSet& pages : requests) {
+            sum += pages.size();
+        }
+        return sum;
+    };
+    const std::size_t asked = total();
+    for (std::size_t count = asked; count > tiles;) {
+        // The light asking for the most pages that still has a level to give way to.
+        std::optional<std::size_t> largest;
+        for (std::size_t light = 0; light < requests.size(); ++light) {
+            const PageSet& pages = requests[light];
+            const int coarsestLevel = lights_[light].faceCount == 0
+                                          ? lights_[light].geometry.finestLevel + kClipmapLevels - 1
+                                          : lights_[light].levels() - 1;
+            if (!pages.empty() && std::get<0>(*pages.begin()) < coarsestLevel &&
+                (!largest || pages.size() > requests[*largest].size())) {
+                largest = light;
+            }
+        }
+        if (!largest) {
+            break; // the coarsest levels alone exceed the pool: the rest is refused (and reported)
+        }
+        PageSet& pages = requests[*largest];
+        const int level = std::get<0>(*pages.begin());
+        PageSet coarser;
+        for (const auto& [l, face, y, x] : pages) {
+            coarser.insert(l == level ? std::tuple{l + 1, face, y >> 1, x >> 1} : std::tuple{l, face, y, x});
+        }
+        pages.swap(coarser);
+        count = total();
+    }
+    return static_cast<int>(asked - total());
 }
 
 void VirtualShadowMaps::invalidateMovedCasters(const std::vector<Light>& lights,
                                                const std::map<engine::EntityId, Aabb>& casters) {
     // Every entity whose box appeared, vanished or changed: its old and new footprints hold stale texels.
-    std::vector<std::pair<std::optional<Aabb>, std::optional<Aabb>>> moved;
+    std::vector<Aabb> moved;
     for (const auto& [entity, box] : casters) {
         const auto before = casters_.find(entity);
         if (before == casters_.end()) {
-            moved.emplace_back(std::nullopt, box);
+            moved.push_back(box);
         } else if (before->second.min != box.min || before->second.max != box.max) {
-            moved.emplace_back(before->second, box);
+            Aabb both = before->second;
+            both.extend(box);
+            // A clipmap's light-space rectangle of the union holds both; a face's projection of it too.
+            moved.push_back(both);
         }
     }
     for (const auto& [entity, box] : casters_) {
         if (!casters.contains(entity)) {
-            moved.emplace_back(box, std::nullopt);
+            moved.push_back(box);
         }
     }
     for (const Light& light : lights) {
-        for (const auto& [before, after] : moved) {
-            const glm::mat4& view = light.geometry.lightView;
-            glm::vec4 rect = before ? lightRect(view, *before) : lightRect(view, *after);
-            if (before && after) {
-                rect = unite(rect, lightRect(view, *after));
+        for (const Aabb& box : moved) {
+            if (light.faceCount == 0) {
+                stats_.invalidated += pool_.invalidate(light.index, light.geometry,
+                                                       lightRect(light.geometry.lightView, box), border_);
+                continue;
             }
-            stats_.invalidated += pool_.invalidate(light.index, light.geometry, rect, border_);
+            // Faces with no visible receiver this frame keep their pages: those under the box go too.
+            const LightState& state = lightStates_.at(light.index);
+            for (int face = 0; face < light.faceCount; ++face) {
+                const std::optional<PerspectiveGeometry>& geometry =
+                    state.faces[static_cast<std::size_t>(face)];
+                if (!geometry) {
+                    continue;
+                }
+                const std::optional<glm::vec4> rect = shadowRect(geometry->face.worldToShadow, box);
+                stats_.invalidated += pool_.invalidateWhere(light.index, [&](const PageKey& key) {
+                    if (key.face != face) {
+                        return false;
+                    }
+                    if (!rect) {
+                        return true; // the box reaches behind the light: its image is unbounded
+                    }
+                    const glm::vec4 page = geometry->pageRect(key.level, key.page, border_);
+                    return page.x <= rect->z && rect->x <= page.z && page.y <= rect->w && rect->y <= page.w;
+                });
+            }
         }
     }
     casters_ = casters;
@@ -166,6 +368,7 @@ VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
     stats_ = {};
     toRender_.clear();
     lights_.clear();
+    samplesDepth_ = depth;
     const int side = kVirtualResolution / pageSize_;
     const auto levelWords = static_cast<std::size_t>(side) * static_cast<std::size_t>(side) / 32;
     if (!requests_) {
@@ -177,64 +380,45 @@ VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
     }
     const glm::vec3 extent = scene.empty() ? glm::vec3(1.0f) : scene.max - scene.min;
     const int levelBase = requestLevelBase(std::max({extent.x, extent.y, extent.z}));
-    const glm::mat4 cameraWorld = glm::inverse(fit.view);
-    const glm::vec3 camera(cameraWorld[3]);
 
+    int layer = 0;
     for (const engine::FrameLight& light : lights) {
-        Light entry;
-        entry.index = light.index;
-        entry.pageLayer = static_cast<int>(lights_.size()) * kClipmapLevels;
-        ClipmapGeometry& geometry = entry.geometry;
-        geometry.lightView = lightView(light.direction);
-        geometry.pageSize = pageSize_;
-        geometry.camera = glm::vec2(geometry.lightView * glm::vec4(camera, 1.0f));
-        geometry.depth = depthRangeFor(geometry.lightView, boxes);
-        // A turned light or a new depth range changes every texel of the light's pages.
-        LightState& state = lightStates_[light.index];
-        if (state.direction != light.direction || state.depth != geometry.depth) {
-            stats_.invalidated += pool_.invalidateLight(light.index);
-            state = {light.direction, geometry.depth};
+        const int layers = light.light.type == engine::LightType::Directional ? kClipmapLevels
+                           : light.light.type == engine::LightType::Spot      ? 1
+                                                                              : kCubeFaces;
+        if (layer + layers > kPageTableLayers) {
+            continue; // no slots to read it by either (ShadowModule warns)
         }
+        Light entry = fitLight(light, fit, boxes);
+        entry.pageLayer = layer;
+        entry.position = light.position;
+        entry.direction = light.direction;
+        entry.coneCosine =
+            light.light.type == engine::LightType::Spot ? std::cos(light.light.outerConeAngle) : -2.0f;
+        entry.range = light.light.range;
+        layer += entry.layers();
         lights_.push_back(entry);
+    }
+    if (!atlas_ || poolTableLayers_ != layer) {
+        allocatePool(layer); // new lights' tables take their share of the budget: the cached pages go
     }
     invalidateMovedCasters(lights_, casters);
 
-    const glm::mat4 clipToWorld = glm::inverse(fit.projection * fit.view);
-    std::vector<PageKey> requests;
+    std::vector<PageSet> requested;
     for (Light& light : lights_) {
-        ClipmapGeometry& geometry = light.geometry;
-        std::array<glm::ivec2, kRequestLevels> origins{};
-        for (int level = 0; level < kRequestLevels; ++level) {
-            origins[static_cast<std::size_t>(level)] = geometry.windowOrigin(levelBase + level);
-        }
-        const std::uint32_t zero = 0;
-        glClearNamedBufferData(requests_->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        mark.use();
-        mark.set("uDepth", 0);
-        mark.set("uSize", size);
-        mark.set("uClipToWorld", clipToWorld);
-        mark.set("uWorldToLight", geometry.lightView);
-        const glm::vec3 toLight =
-            -glm::normalize(glm::vec3(glm::inverse(geometry.lightView) * glm::vec4(0, 0, -1, 0)));
-        glUniform3fv(mark.uniformLocation("uToLight"), 1, glm::value_ptr(toLight));
-        glUniform3fv(mark.uniformLocation("uCamera"), 1, glm::value_ptr(camera));
-        mark.set("uLevelBase", levelBase);
-        mark.set("uPageSize", pageSize_);
-        mark.set("uPagesPerSide", side);
-        glUniform1f(mark.uniformLocation("uReach"), static_cast<float>(border_));
-        glUniform1f(mark.uniformLocation("uTexelPixels"), texelPixels_);
-        glUniform2iv(mark.uniformLocation("uWindowOrigin"), kRequestLevels, glm::value_ptr(origins[0]));
-        glBindTextureUnit(0, depth);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, requests_->id());
-        // 8x8 invocations a group, each marking a 4x4 block of pixels (pages.comp).
-        const glm::ivec2 groups = (size + glm::ivec2(31)) / 32;
-        glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        const std::vector<PageKey> pages = requestedPages(light.index, geometry, levelBase);
-        requests.insert(requests.end(), pages.begin(), pages.end());
+        requested.push_back(markPages(mark, light, fit, levelBase, size));
+        stats_.requested += static_cast<int>(requested.back().size());
     }
     glUseProgram(0);
-    stats_.requested = static_cast<int>(requests.size());
+    stats_.coarsened = coarsenToFit(requested);
+    std::vector<PageKey> requests;
+    for (std::size_t light = 0; light < lights_.size(); ++light) {
+        // Coarse to fine, so that if the pool still runs out, the coarse pages stay.
+        for (auto it = requested[light].rbegin(); it != requested[light].rend(); ++it) {
+            const auto& [level, face, y, x] = *it;
+            requests.push_back({lights_[light].index, level, {x, y}, face});
+        }
+    }
     PagePool::FrameResult served = pool_.request(requests, ++frame_);
     stats_.cached = served.cached;
     stats_.refused = served.refused;
@@ -244,46 +428,76 @@ VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
     stats_.texelsRendered =
         served.render.size() * static_cast<std::size_t>(tile_) * static_cast<std::size_t>(tile_);
     toRender_ = std::move(served.render);
+    uploadPageTables();
+    return lights_;
+}
 
-    if (!lights_.empty()) {
-        const auto layers = static_cast<int>(lights_.size()) * kClipmapLevels;
-        if (!pageTable_ || pageTableLights_ != static_cast<int>(lights_.size())) {
-            pageTable_.emplace(GL_R32UI, glm::ivec2(side), layers);
-            glTextureParameteri(pageTable_->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            glTextureParameteri(pageTable_->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            pageTableLights_ = static_cast<int>(lights_.size());
-            uploaded_.clear();
+void VirtualShadowMaps::uploadPageTables() {
+    if (lights_.empty()) {
+        return;
+    }
+    const int side = kVirtualResolution / pageSize_;
+    const int layers = lights_.back().pageLayer + lights_.back().layers();
+    if (!pageTable_ || pageTableLayers_ != layers) {
+        // Mip levels for the perspective maps' levels; a clipmap level uses level 0 of its layer.
+        levelsPerTable_ = PerspectiveGeometry{{}, pageSize_}.levels();
+        pageTable_.emplace(GL_R32UI, glm::ivec2(side), layers, levelsPerTable_);
+        glTextureParameteri(pageTable_->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+        glTextureParameteri(pageTable_->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        pageTableLayers_ = layers;
+        uploaded_.clear();
+    }
+    // The tables change only with the pool's pages (drawn, evicted, dropped), or a window moving or
+    // shifting its levels; the last upload's drawn bits go stale once nothing is drawn.
+    std::vector<UploadedTable> current;
+    for (const Light& light : lights_) {
+        current.push_back(
+            {light.index, light.faceCount, light.geometry.finestLevel,
+             light.faceCount == 0 ? light.geometry.windowOrigin(light.geometry.finestLevel) : glm::ivec2(0),
+             !toRender_.empty()});
+    }
+    const bool changed = !toRender_.empty() || stats_.invalidated > 0 || current != uploaded_ ||
+                         std::any_of(uploaded_.begin(), uploaded_.end(),
+                                     [](const UploadedTable& table) { return table.drawnBits; });
+    if (!changed) {
+        return;
+    }
+    uploaded_ = current;
+    std::vector<bool> drawn(static_cast<std::size_t>(pool_.tiles()), false);
+    for (const auto& [tile, key] : toRender_) {
+        drawn[static_cast<std::size_t>(tile)] = true;
+    }
+    const auto markDrawn = [&](std::vector<std::uint32_t>& table) {
+        for (std::uint32_t& entry : table) {
+            if (entry != 0u && drawn[entry & kPageTileMask]) {
+                entry |= kPageDrawnBit;
+            }
         }
-        // The tables change only with the pool's pages (drawn, evicted, dropped), or a window moving or
-        // shifting its levels; the last upload's drawn bits go stale once nothing is drawn.
-        std::vector<UploadedTable> current;
-        for (const Light& light : lights_) {
-            current.push_back({light.index, light.geometry.finestLevel,
-                               light.geometry.windowOrigin(light.geometry.finestLevel), !toRender_.empty()});
-        }
-        const bool changed = !toRender_.empty() || stats_.invalidated > 0 || current != uploaded_ ||
-                             std::any_of(uploaded_.begin(), uploaded_.end(),
-                                         [](const UploadedTable& table) { return table.drawnBits; });
-        if (!changed) {
-            return lights_;
-        }
-        uploaded_ = current;
-        for (const Light& light : lights_) {
+    };
+    for (const Light& light : lights_) {
+        if (light.faceCount == 0) {
             std::vector<std::uint32_t> table = buildPageTable(pool_, light.index, light.geometry);
-            std::vector<bool> drawn(static_cast<std::size_t>(pool_.tiles()), false);
-            for (const auto& [tile, key] : toRender_) {
-                drawn[static_cast<std::size_t>(tile)] = true;
-            }
-            for (std::uint32_t& entry : table) {
-                if (entry != 0u && drawn[entry & kPageTileMask]) {
-                    entry |= kPageDrawnBit;
-                }
-            }
+            markDrawn(table);
             glTextureSubImage3D(pageTable_->id(), 0, 0, 0, light.pageLayer, side, side, kClipmapLevels,
                                 GL_RED_INTEGER, GL_UNSIGNED_INT, table.data());
+            continue;
+        }
+        const LightState& state = lightStates_.at(light.index);
+        for (int face = 0; face < light.faceCount; ++face) {
+            const std::optional<PerspectiveGeometry>& geometry = state.faces[static_cast<std::size_t>(face)];
+            PerspectiveGeometry empty{{}, pageSize_};
+            std::vector<std::uint32_t> table =
+                buildPageTable(pool_, light.index, face, geometry ? *geometry : empty);
+            markDrawn(table);
+            std::size_t offset = 0;
+            for (int level = 0; level < light.levels(); ++level) {
+                const int levelSide = side >> level;
+                glTextureSubImage3D(pageTable_->id(), level, 0, 0, light.pageLayer + face, levelSide,
+                                    levelSide, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, table.data() + offset);
+                offset += static_cast<std::size_t>(levelSide) * static_cast<std::size_t>(levelSide);
+            }
         }
     }
-    return lights_;
 }
 
 void VirtualShadowMaps::render(engine::ModuleHost& host, const engine::Scene& scene,
@@ -316,11 +530,14 @@ void VirtualShadowMaps::render(engine::ModuleHost& host, const engine::Scene& sc
         }
         glClearDepth(1.0);
         glClear(GL_DEPTH_BUFFER_BIT);
+        const Light& light = *byIndex.at(key.light);
         const LightProjection projection =
-            byIndex.at(key.light)->geometry.pageProjection(key.level, key.page, border_);
+            light.faceCount == 0 ? light.geometry.pageProjection(key.level, key.page, border_)
+                                 : light.faces[static_cast<std::size_t>(key.face)].pageProjection(
+                                       key.level, key.page, border_);
         const glm::mat4 viewProjection = projection.projection * projection.view;
         program.set("uLightViewProjection", viewProjection);
-        program.set("uDepthRange", glm::vec2(0.0f));
+        program.set("uDepthRange", projection.depthRange);
         host.drawMeshes(scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
             program.set("uModel", model);
             return true;

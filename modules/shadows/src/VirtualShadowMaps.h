@@ -11,36 +11,58 @@
 #include <engine/gl/Program.h>
 #include <engine/gl/TextureArray.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
+#include <tuple>
 #include <vector>
 
 namespace shadows {
 
-/// @brief The virtual shadow maps of directional lights: a clipmap of kClipmapLevels levels per light, each
-/// a kVirtualResolution² window of pages around the camera; pages are marked from the view's depth image on
+/// @brief The virtual shadow maps: a clipmap of kClipmapLevels levels per directional light, each a
+/// kVirtualResolution² window of pages around the camera; one perspective map with mip levels per spot light
+/// and per face of a point light (PerspectiveGeometry). Pages are marked from the view's depth image on
 /// the GPU (shaders/shadows/pages.comp), served from one pool of atlas tiles in a fixed budget (PagePool,
 /// least recently used first) and drawn only when new or invalidated. Every lookup goes through the light's
 /// page table (buildPageTable) to the finest resident page over it.
 class VirtualShadowMaps {
 public:
-    /// @brief Sizes the pool for `settings.virtualBudgetMiB` and the plan's formats. Throws
-    /// std::invalid_argument when the budget holds no page.
+    /// @brief A pool in `settings.virtualBudgetMiB` for the plan's formats, allocated with the first frame's
+    /// lights (their page tables share the budget). Throws std::invalid_argument when the budget holds no
+    /// page beside the page requests.
     VirtualShadowMaps(const ShadowSettings& settings, const ShadowPlan& plan);
 
     /// @brief One light's pages this frame.
     struct Light {
         int index = 0;
+        /// 0: a directional light's clipmap (`geometry`); 1: a spot light's map, 6: a point light's faces
+        /// (`faces`).
+        int faceCount = 0;
         ClipmapGeometry geometry;
-        /// First layer of its page table in pageTable().
+        /// Spot: [0]; point: cubeFaceAxis's order. A face whose projection is not valid has no visible
+        /// receiver this frame.
+        std::array<PerspectiveGeometry, kCubeFaces> faces{};
+        /// First layer of its page table in pageTable(): a layer per clipmap level (mip level 0 of each), or
+        /// a layer per face holding its levels as mip levels.
         int pageLayer = 0;
+        /// Spot and point lights: where they shine from, the spot's axis and the cosine of its outer cone
+        /// (-2 for a point light), the range (0 unlimited): pixels they do not reach ask for no pages.
+        glm::vec3 position{0.0f};
+        glm::vec3 direction{0.0f, 0.0f, -1.0f};
+        float coneCosine = -2.0f;
+        float range = 0.0f;
+        /// Levels a lookup can read: kClipmapLevels, or the perspective maps' mip levels.
+        [[nodiscard]] int levels() const { return faceCount == 0 ? kClipmapLevels : faces[0].levels(); }
+        /// Layers of the page table.
+        [[nodiscard]] int layers() const { return faceCount == 0 ? kClipmapLevels : faceCount; }
     };
 
     /// @brief Marks, with `mark` (shaders/shadows/pages.comp), the pages the view's depth image `depth` (of
-    /// `size`, seen through `fit`) asks for, for
-    /// each light in `lights` (directional, shadow-casting), invalidates the pages of casters that moved
+    /// `size`, seen through `fit`) asks for, for each light in `lights` (shadow-casting), invalidates the
+    /// pages of casters that moved
     /// (`casters`: each mesh entity's world box), allocates and uploads the page tables. Returns the lights'
     /// clipmaps, in order.
     std::vector<Light> update(const engine::gl::Program& mark, const FitView& fit,
@@ -55,7 +77,7 @@ public:
     [[nodiscard]] const ShadowMapArray& atlas() const { return *atlas_; }
     [[nodiscard]] GLuint pageTable() const { return pageTable_ ? pageTable_->id() : 0; }
     [[nodiscard]] const VirtualPageStats& stats() const { return stats_; }
-    /// @brief GPU bytes: the atlas, the page tables and the request buffer.
+    /// @brief GPU bytes: the atlas, the page tables and the request buffer (within the budget).
     [[nodiscard]] std::size_t bytes() const;
     /// @brief x pages per side of a level, y tiles per atlas row, z atlas side.
     [[nodiscard]] glm::ivec4 pagesUniform() const;
@@ -63,13 +85,30 @@ public:
     [[nodiscard]] glm::vec4 pageUniform() const;
 
 private:
+    /// What each light's pages were drawn with: a change redraws them.
     struct LightState {
+        int faceCount = -1;
         glm::vec3 direction{0.0f};
         glm::vec2 depth{0.0f};
+        /// The last valid projection of each face (a face with no visible receiver keeps its pages, which
+        /// casters moving meanwhile still invalidate).
+        std::array<std::optional<PerspectiveGeometry>, kCubeFaces> faces{};
     };
-    /// Reads back the request bits of `light` and turns them into pool keys, coarse to fine, clamped to
-    /// its clipmap (sets the geometry's finest level).
-    std::vector<PageKey> requestedPages(int light, ClipmapGeometry& geometry, int levelBase);
+    /// A light's requests: level, face, page y, page x.
+    using PageSet = std::set<std::tuple<int, int, int, int>>;
+    /// Fits `light`'s clipmap or faces and drops its pages when what they were drawn with changed.
+    Light fitLight(const engine::FrameLight& light, const FitView& fit, std::span<const Aabb> boxes);
+    /// Runs `mark` for `light` and reads back its request bits as pages; a clipmap's are clamped to its
+    /// kClipmapLevels (which sets the geometry's finest level).
+    PageSet markPages(const engine::gl::Program& mark, Light& light, const FitView& fit, int levelBase,
+                      glm::ivec2 size);
+    /// Over budget, the finest level of the light asking for the most pages gives way to its parents until
+    /// the pool holds every light's pages; returns how many requests merged.
+    int coarsenToFit(std::vector<PageSet>& requests) const;
+    void uploadPageTables();
+    /// Sizes the pool to what the budget leaves beside `tableLayers` page-table layers and the requests (at
+    /// least one page, warned), dropping every page.
+    void allocatePool(int tableLayers);
     void invalidateMovedCasters(const std::vector<Light>& lights,
                                 const std::map<engine::EntityId, Aabb>& casters);
 
@@ -80,10 +119,12 @@ private:
     float texelPixels_ = 1.0f;
     int tilesPerRow_ = 1;
     int layers_ = 1;
+    std::size_t budget_ = 0;
+    int poolTableLayers_ = -1; // the page-table layers the pool was sized beside
     PagePool pool_;
     std::unique_ptr<ShadowMapArray> atlas_;
     std::optional<engine::gl::TextureArray> pageTable_;
-    int pageTableLights_ = 0;
+    int pageTableLayers_ = 0;
     std::optional<engine::gl::Buffer> requests_;
     std::map<int, LightState> lightStates_;
     std::map<engine::EntityId, Aabb> casters_; // last frame's
@@ -91,15 +132,18 @@ private:
     std::vector<std::pair<int, PageKey>> toRender_;
     VirtualPageStats stats_;
     std::uint64_t frame_ = 0; // the pool's clock: one tick per update
+    GLuint samplesDepth_ = 0; // the view's depth image the pages are marked from
     /// What each light's uploaded page table was built for.
     struct UploadedTable {
         int light = 0;
+        int faceCount = 0;
         int finestLevel = 0;
         glm::ivec2 finestOrigin{0};
         bool drawnBits = false;
         bool operator==(const UploadedTable&) const = default;
     };
     std::vector<UploadedTable> uploaded_;
+    int levelsPerTable_ = 1; // mip levels of the page table: the perspective maps' levels
 };
 
 } // namespace shadows

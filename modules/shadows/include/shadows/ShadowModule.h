@@ -148,7 +148,6 @@ private:
     std::unique_ptr<engine::gl::Program> pageMarkProgram_;
     bool virtualFrame_ = false; // this frame reads the virtual maps' atlas
     GLuint pageTableUnit_ = 0;
-    bool warnedVirtualFallback_ = false;
     bool warnedPageBudget_ = false;
     bool warnedNoSamples_ = false;
     engine::ShaderVariantKey lightingKey_ = 0;

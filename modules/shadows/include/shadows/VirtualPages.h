@@ -21,6 +21,10 @@ inline constexpr int kRequestLevels = 64;
 /// slot of the shadow block).
 inline constexpr int kClipmapLevels = 16;
 
+/// @brief Page-table layers all lights together may use: one per map slot of the lighting pass (a clipmap
+/// level, a spot map, a cube face), kMaxMaps of ShadowBlock.h.
+inline constexpr int kPageTableLayers = 24;
+
 /// @brief Page counters of the virtual maps in the last frame.
 struct VirtualPageStats {
     /// Pages the visible pixels asked for (after clamping to each light's clipmap).
@@ -50,16 +54,24 @@ int virtualPageBorderTexels(const ShadowPlan& plan);
 /// stored values).
 std::size_t virtualTileBytes(const ShadowPlan& plan, int pageSize);
 
-/// @brief One page of a directional light's clipmap: absolute level (texels 2^level world units wide) and
-/// absolute page coordinates on that level's grid, which is anchored at the light-space origin (so a page
-/// keeps its key, and its cached texels, however the window of pages around the camera moves).
+/// @brief GPU bytes the virtual maps hold beside the pool for `pageSize`² pages: the page requests (a bit per
+/// page of kRequestLevels levels) and `tableLayers` page-table layers, each a mip chain of 32-bit entries
+/// from pagesPerSide² down to one.
+std::size_t virtualOverheadBytes(int pageSize, int tableLayers);
+
+/// @brief One page of a light's virtual map. A directional light's clipmap: absolute level (texels 2^level
+/// world units wide) and absolute page coordinates on that level's grid, which is anchored at the light-space
+/// origin (so a page keeps its key, and its cached texels, however the window of pages around the camera
+/// moves). A spot light's map or a point light's face: the mip level and the page on it.
 struct PageKey {
     /// Engine light index.
     int light = 0;
-    /// Absolute level: texels 2^level world units wide.
+    /// Clipmap: absolute level, texels 2^level world units wide. Perspective map: mip level, 0 finest.
     int level = 0;
     /// Absolute page coordinates on the level's grid.
     glm::ivec2 page{0};
+    /// Cube face of a point light (cubeFaceAxis's order); 0 for directional and spot lights.
+    int face = 0;
     /// @brief Field-wise equality.
     bool operator==(const PageKey&) const = default;
 };
@@ -103,6 +115,34 @@ struct ClipmapGeometry {
 private:
     LightProjection projectionOver(glm::dvec2 low, glm::dvec2 high, int level) const;
 };
+
+/// @brief The virtual map of a spot light or of one face of a point light: one perspective projection of
+/// kVirtualResolution² texels with mip levels, level m of texels 2^m level-0 texels wide in
+/// (pagesPerSide() >> m)² pages. Every page is a crop of the same frustum, so all levels store the same depth
+/// and a page keeps its texels while the light and its depth range stay.
+struct PerspectiveGeometry {
+    /// The whole map's projection (level 0 at kVirtualResolution²), its depth range snapped outward
+    /// (virtualPerspective).
+    LightProjection face;
+    /// Side of a page, texels (ShadowSettings::virtualPageSize).
+    int pageSize = 128;
+
+    /// Pages along each side of level 0.
+    [[nodiscard]] int pagesPerSide() const { return kVirtualResolution / pageSize; }
+    /// Mip levels, down to one page: log2(pagesPerSide()) + 1.
+    [[nodiscard]] int levels() const;
+    /// The shadow texture rectangle (min x, min y, max x, max y) of page `page` of level `level` and
+    /// `borderTexels` of that level's texels on every side.
+    [[nodiscard]] glm::vec4 pageRect(int level, glm::ivec2 page, int borderTexels) const;
+    /// The projection page `page` of level `level` is drawn with: the face's frustum cropped to pageRect.
+    [[nodiscard]] LightProjection pageProjection(int level, glm::ivec2 page, int borderTexels) const;
+};
+
+/// @brief A perspective virtual map with light view `view`, square field of view `fov` and near and far
+/// `depthRange` (a fitted map's), the range widened to quarter octaves (near down, far up), so a caster
+/// moving inside the light's reach rarely changes it (a change redraws every page of the map). Invalid when
+/// the range is not positive and finite.
+LightProjection virtualPerspective(const glm::mat4& view, float fov, glm::vec2 depthRange);
 
 /// @brief The light-space z range a light's pages are drawn with: that of `boxes` in `lightView`, widened to
 /// a grid of an eighth of its span rounded up to a power of two, so a caster moving inside the scene's
@@ -150,6 +190,19 @@ public:
     FrameResult request(std::span<const PageKey> requests, std::uint64_t frame);
     /// @brief Drops every resident page of `light` (its direction or depth range changed).
     int invalidateLight(int light);
+    /// @brief Drops the pages of `light` for which `stale(key)` holds; returns how many.
+    template <typename Stale>
+    int invalidateWhere(int light, Stale&& stale) {
+        int dropped = 0;
+        for (int tile = 0; tile < static_cast<int>(tiles_.size()); ++tile) {
+            const Tile& record = tiles_[static_cast<std::size_t>(tile)];
+            if (record.used && record.key.light == light && stale(record.key)) {
+                release(tile);
+                ++dropped;
+            }
+        }
+        return dropped;
+    }
     /// @brief Drops the pages of `light` whose light-space rectangle (with `borderTexels` of their level's
     /// texels) overlaps `rect` (min x, min y, max x, max y) in `geometry`: a caster there moved.
     int invalidate(int light, const ClipmapGeometry& geometry, glm::vec4 rect, int borderTexels);
@@ -186,5 +239,11 @@ private:
 /// coarser level that covers it, so a lookup reads one entry and lands on the finest texels anyone rendered
 /// there.
 std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, const ClipmapGeometry& geometry);
+
+/// @brief The page table of face `face` of `light`'s perspective map, a mip chain: level m's
+/// (pagesPerSide >> m)² entries after the finer levels', finest first, each page without texels pointing at
+/// its finest resident ancestor (as buildPageTable).
+std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, int face,
+                                          const PerspectiveGeometry& geometry);
 
 } // namespace shadows

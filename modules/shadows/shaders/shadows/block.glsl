@@ -9,10 +9,11 @@ const int GS_SHADOW_LIGHT_SINGLE = 1;
 const int GS_SHADOW_LIGHT_CASCADES = 2;
 const int GS_SHADOW_LIGHT_CUBE = 3;
 const int GS_SHADOW_LIGHT_VIRTUAL = 4;
+const int GS_SHADOW_LIGHT_VIRTUAL_FACES = 5;
 
 struct GsShadowLightMaps {
-    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count or clipmap levels, z: first level's slot, w: its
-                     // page-table layer
+    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count, clipmap or mip levels; VIRTUAL: z first level's
+                     // slot, w its page-table layer; VIRTUAL_FACES: z 1 (spot) or 6 (cube), w first face's layer
     ivec4 slots;     // map slot of the single map (x), of each cascade, or of cube faces 0-3; -1: none
     ivec4 faceSlots; // cube faces 4, 5 (xy)
     vec4 splitNear;  // cascades: view depth each starts at

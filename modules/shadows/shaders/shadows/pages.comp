@@ -1,6 +1,7 @@
 #version 450 core
 // Page marking of the virtual maps: every visible pixel of the view's depth image asks for the pages, at the
-// clipmap level whose texels span at most a pixel there (gsVirtualLevel), that its lookup and kernel read
+// clipmap level (directional lights, gsVirtualLevel) or mip level (spot maps and point lights' faces,
+// gsVirtualFaceLevel) whose texels span at most a pixel there, that its lookup and kernel read
 // (gsVirtualPageSpan). The requests are bits, one per page of each request level's window, read back by the
 // module (ShadowModule::markPages), which also mirrors the level choice on the CPU in its tests.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -23,6 +24,18 @@ uniform float uReach;
 uniform float uTexelPixels; // the m a page's level is chosen for (ShadowSettings::virtualTexelPixels)
 // First page of each request level's window (ClipmapGeometry::windowOrigin), from the CPU so both agree.
 uniform ivec2 uWindowOrigin[GS_REQUEST_LEVELS];
+// Spot and point lights: 1 or 6 perspective maps (0 for a directional clipmap), each world -> shadow texture
+// space, of uFaceLevels mip levels; faces not in uFaceMask have no visible receiver. A pixel beyond the light's
+// range or outside a spot's cone (uConeCosine, -2 for a point light) gets none of its light and asks nothing.
+uniform int uFaces;
+uniform int uFaceMask;
+uniform int uFaceLevels;
+uniform mat4 uFaceToShadow[6];
+uniform vec3 uLightPosition;
+uniform vec3 uSpotDirection;
+uniform float uConeCosine;
+uniform float uRange;
+uniform float uTexelScale; // a level-0 texel's world size per unit of distance along the face's axis
 
 layout(std430, binding = 0) buffer GsPageRequests {
     uint requests[];
@@ -69,6 +82,51 @@ void gsMark(int levelIndex, ivec2 page) {
 
 const int GS_BLOCK = 4;
 
+// The pages of a spot map or cube face the pixel at `position` (screen derivatives dPdx, dPdy, facet `normal`)
+// reads.
+void gsMarkPerspective(vec3 position, vec3 dPdx, vec3 dPdy, vec3 normal, float pixelSize) {
+    vec3 toLight = uLightPosition - position;
+    float distance = length(toLight);
+    if (!(distance > 0.0) || (uRange > 0.0 && distance >= uRange)) {
+        return;
+    }
+    toLight /= distance;
+    if (dot(-toLight, uSpotDirection) < uConeCosine) {
+        return;
+    }
+    int face = uFaces == 6 ? gsCubeFace(-toLight) : 0;
+    if ((uFaceMask & (1 << face)) == 0) {
+        return;
+    }
+    mat4 m = uFaceToShadow[face];
+    vec4 clip = m * vec4(position, 1.0);
+    if (!(clip.w > 0.0)) {
+        return;
+    }
+    vec2 coord = clip.xy / clip.w;
+    if (any(lessThan(coord, vec2(0.0))) || any(greaterThan(coord, vec2(1.0)))) {
+        return;
+    }
+    // The derivative of the projection (clip.xy / clip.w) in level-0 texels; unlit, by the pixel's size alone.
+    float resolution = float(uPageSize * uPagesPerSide);
+    vec4 dx = m * vec4(dPdx, 0.0);
+    vec4 dy = m * vec4(dPdy, 0.0);
+    bool lit = dot(normal, toLight) > 0.0;
+    vec2 texelDx = lit ? (dx.xy - coord * dx.w) / clip.w * resolution : vec2(0.0);
+    vec2 texelDy = lit ? (dy.xy - coord * dy.w) / clip.w * resolution : vec2(0.0);
+    int level = gsVirtualFaceLevel(texelDx, texelDy, pixelSize / (uTexelScale * clip.w), uTexelPixels,
+                                   uFaceLevels);
+    ivec2 low;
+    ivec2 high;
+    gsVirtualPageSpan(coord * exp2(-float(level)) * resolution, uReach, float(uPageSize), uPagesPerSide >> level,
+                      low, high);
+    for (int y = low.y; y <= high.y; ++y) {
+        for (int x = low.x; x <= high.x; ++x) {
+            gsMark(face * uFaceLevels + level, ivec2(x, y));
+        }
+    }
+}
+
 void main() {
     ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * GS_BLOCK;
     mat3 toLight = mat3(uWorldToLight);
@@ -85,9 +143,13 @@ void main() {
             // The facet, turned towards the camera: lit where it faces the light too.
             vec3 normal = cross(dPdx, dPdy);
             normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
+            float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
+            if (uFaces > 0) {
+                gsMarkPerspective(position, dPdx, dPdy, normal, pixelSize);
+                continue;
+            }
             bool lit = dot(normal, uToLight) > 0.0;
             float unitFootprint = lit ? gsTexelFootprintPixels((toLight * dPdx).xy, (toLight * dPdy).xy) : 0.0;
-            float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
             // m grows with the texel: a texel uTexelPixels times as large spans uTexelPixels times the pixels.
             int level = gsVirtualLevel(unitFootprint / uTexelPixels, pixelSize * uTexelPixels, uLevelBase,
                                        GS_REQUEST_LEVELS) -

@@ -168,14 +168,21 @@ struct GsShadowFragment {
     vec3 dPdy;
 };
 
-#ifdef GS_SHADOW_LAYOUT_VIRTUAL
-// A directional light's virtual clipmap (ShadowModule, docs/SHADOWS.md "Virtual maps"): each level a slot of
-// the block, its pages' entries in layers of the page table, every resident page a tile of the atlas that
-// gsShadowMaps then is. While gsShadowMapVisibility reads a level, gsVirtualPageLayer is that level's layer;
-// when the receiver's page holds no texels of the level it returns -1 and names the level that does.
+#if defined(GS_SHADOW_LAYOUT_VIRTUAL) || defined(GS_SHADOW_LAYOUT_VIRTUAL_FACES)
+#define GS_SHADOW_VIRTUAL_PAGES
+// Virtual maps (ShadowModule, docs/SHADOWS.md "Virtual maps"): every resident page is a tile of the atlas that
+// gsShadowMaps then is, found through the light's page table. A directional light's clipmap has a slot per
+// level and a page-table layer per level; a spot map or cube face has one slot and one layer, its levels the
+// layer's mip levels. While gsShadowMapVisibility reads a level, gsVirtualPageLayer and gsVirtualTableLevel
+// name its table, gsVirtualLevelIndex the level, and gsVirtualLevelScale its texels per level-0 texel (1 for a
+// clipmap, whose level slots carry their own sizes). When the receiver's page holds no texels of the level it
+// returns -1 and names the level that does (gsVirtualNextLevel).
 uniform usampler2DArray gsShadowPageTable;
 int gsVirtualPageLayer = -1;
-int gsVirtualFirstSlot = 0;
+int gsVirtualTableLevel = 0;
+int gsVirtualLevelIndex = 0;
+float gsVirtualLevelScale = 1.0;
+bool gsVirtualFaceMaps = false; // outside a perspective map nothing is mapped, no coarser level holds it
 int gsVirtualNextLevel = 0;
 
 // The page under window texel `window` of a level, and the level index a page-table entry names
@@ -198,6 +205,15 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     // value holds at any scene scale, map size and cascade.
     mat4 m = gsShadowMatrix[slot];
     vec4 wRow = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+    // Texels per side, and a texel's world size (per unit of distance in a perspective map), of the level read.
+    float resolution = gsShadowTexel[slot].x;
+    float texelScale = gsShadowTexel[slot].z;
+#ifdef GS_SHADOW_VIRTUAL_PAGES
+    if (gsVirtualPageLayer >= 0) {
+        resolution *= gsVirtualLevelScale;
+        texelScale /= gsVirtualLevelScale;
+    }
+#endif
 #ifdef GS_SHADOW_ORTHOGRAPHIC
     // Every map of the frame is orthographic (ShadowModule::layoutKey): their matrices' last row is exactly
     // (0, 0, 0, 1), so clip w is exactly 1 and the perspective terms drop out of the variant.
@@ -205,8 +221,7 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
 #else
     bool perspective = gsShadowTexel[slot].w > 0.5;
 #endif
-    float texelSize =
-        gsShadowTexel[slot].z * (perspective ? abs(dot(wRow, vec4(fragment.position, 1.0))) : 1.0);
+    float texelSize = texelScale * (perspective ? abs(dot(wRow, vec4(fragment.position, 1.0))) : 1.0);
     vec3 position = fragment.position + fragment.toLight * (gsShadowConstantBiasTexels * texelSize);
 #ifdef GS_SHADOW_NORMAL_OFFSET
     // A perspective map measures depth along its axis, so a receiver facing the light but not the axis still
@@ -227,22 +242,26 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     vec3 coord = clip.xyz / clip.w;
 #endif
     float layerSize = gsShadowTexel[slot].x;
-#ifdef GS_SHADOW_LAYOUT_VIRTUAL
+#ifdef GS_SHADOW_VIRTUAL_PAGES
     if (gsVirtualPageLayer >= 0) {
-        // A clipmap level (gsShadowVirtualVisibility): read the texels of the page under the receiver where
-        // they live in the atlas, or name the coarser level that holds them.
-        vec2 window = coord.xy * gsShadowTexel[slot].x;
+        // A level of a virtual map: read the texels of the page under the receiver where they live in the
+        // atlas, or name the coarser level that holds them.
+        vec2 window = coord.xy * resolution;
         ivec2 page = gsVirtualPageAt(window);
-        if (any(lessThan(page, ivec2(0))) || any(greaterThanEqual(page, ivec2(gsVirtualPages.x)))) {
-            gsVirtualNextLevel = slot - gsVirtualFirstSlot + 1;
+        int pages = int(float(gsVirtualPages.x) * gsVirtualLevelScale);
+        if (any(lessThan(page, ivec2(0))) || any(greaterThanEqual(page, ivec2(pages)))) {
+            if (gsVirtualFaceMaps) {
+                return 1.0; // beyond a spot map or a face's margin: the light reaches nothing there
+            }
+            gsVirtualNextLevel = gsVirtualLevelIndex + 1;
             return -1.0;
         }
-        uint entry = texelFetch(gsShadowPageTable, ivec3(page, gsVirtualPageLayer), 0).r;
+        uint entry = texelFetch(gsShadowPageTable, ivec3(page, gsVirtualPageLayer), gsVirtualTableLevel).r;
         if (entry == 0u) {
             return 1.0; // nothing resident at any level here: the module warned that the budget fell short
         }
         int resident = gsVirtualEntryLevel(entry);
-        if (resident != slot - gsVirtualFirstSlot) {
+        if (resident != gsVirtualLevelIndex) {
             gsVirtualNextLevel = resident;
             return -1.0;
         }
@@ -296,12 +315,11 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
     vec3 dx = gsShadowDerivative(m, clip, fragment.dPdx);
     vec3 dy = gsShadowDerivative(m, clip, fragment.dPdy);
-    lookup.screenGradient =
-        gsReceiverPlaneGradient(dx.xy * gsShadowTexel[slot].x, dy.xy * gsShadowTexel[slot].x, dx.z, dy.z);
+    lookup.screenGradient = gsReceiverPlaneGradient(dx.xy * resolution, dy.xy * resolution, dx.z, dy.z);
 #endif
     lookup.tangentGradient = vec2(0.0);
 #ifdef GS_SHADOW_TANGENT_PLANE
-    lookup.tangentGradient = gsTangentPlaneGradient(m, fragment.position, fragment.normal, gsShadowTexel[slot].x);
+    lookup.tangentGradient = gsTangentPlaneGradient(m, fragment.position, fragment.normal, resolution);
 #endif
     lookup.pointGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_STORED)
@@ -321,8 +339,8 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         gsDebugSet = true;
         gsDebugSlot = slot;
 #ifdef GS_SHADOW_DEBUG_DENSITY
-        vec3 texelDx = gsShadowDerivative(m, clip, fragment.dPdx) * gsShadowTexel[slot].x;
-        vec3 texelDy = gsShadowDerivative(m, clip, fragment.dPdy) * gsShadowTexel[slot].x;
+        vec3 texelDx = gsShadowDerivative(m, clip, fragment.dPdx) * resolution;
+        vec3 texelDy = gsShadowDerivative(m, clip, fragment.dPdy) * resolution;
         gsDebugDensity = gsTexelFootprintPixels(texelDx.xy, texelDy.xy);
 #endif
         gsDebugVisibility = result.visibility;
@@ -384,33 +402,72 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
 #ifdef GS_SHADOW_LAYOUT_VIRTUAL
     if (kind == GS_SHADOW_LIGHT_VIRTUAL) {
         int levels = maps.kind.y;
-        gsVirtualFirstSlot = maps.kind.z;
+        int firstSlot = maps.kind.z;
         // Start at the finest level whose window holds the receiver: the windows double in radius around the
         // camera (up to a page off centre), so from the finest level's coordinates.
-        vec2 finest = (gsShadowMatrix[gsVirtualFirstSlot] * vec4(worldPosition, 1.0)).xy - 0.5;
+        vec2 finest = (gsShadowMatrix[firstSlot] * vec4(worldPosition, 1.0)).xy - 0.5;
         float reach = max(abs(finest.x), abs(finest.y)) / (0.5 - 1.0 / float(gsVirtualPages.x));
         int level = min(reach > 1.0 ? int(ceil(log2(reach))) : 0, levels - 1);
         // That level's entry under the receiver names the finest resident level over it: go there at once
         // rather than through a whole lookup that would only name it.
-        vec2 window = (gsShadowMatrix[gsVirtualFirstSlot + level] * vec4(worldPosition, 1.0)).xy *
-                      gsShadowTexel[gsVirtualFirstSlot + level].x;
+        vec2 window =
+            (gsShadowMatrix[firstSlot + level] * vec4(worldPosition, 1.0)).xy * gsShadowTexel[firstSlot + level].x;
         ivec2 page = clamp(gsVirtualPageAt(window), ivec2(0), ivec2(gsVirtualPages.x - 1));
         uint entry = texelFetch(gsShadowPageTable, ivec3(page, maps.kind.w + level), 0).r;
         level = entry != 0u ? gsVirtualEntryLevel(entry) : level;
         // Each try lands on the finest resident page over the receiver, or names its level: one but where the
         // receiver's offsets cross into a page another level holds.
+        float visibility = 1.0;
         for (int attempt = 0; attempt < levels && level < levels; ++attempt) {
             gsVirtualPageLayer = maps.kind.w + level;
-            float visibility = gsShadowMapVisibility(gsVirtualFirstSlot + level, fragment);
+            gsVirtualLevelIndex = level;
+            visibility = gsShadowMapVisibility(firstSlot + level, fragment);
             if (visibility >= 0.0) {
                 gsDebugMap = gsDebugMap < 0 ? level : gsDebugMap;
-                gsVirtualPageLayer = -1;
-                return visibility;
+                break;
             }
             level = max(gsVirtualNextLevel, level + 1);
         }
         gsVirtualPageLayer = -1;
-        return 1.0;
+        return visibility < 0.0 ? 1.0 : visibility;
+    }
+#endif
+#ifdef GS_SHADOW_LAYOUT_VIRTUAL_FACES
+    if (kind == GS_SHADOW_LIGHT_VIRTUAL_FACES) {
+        int face = maps.kind.z == 6 ? gsCubeFace(worldPosition - gsLights[lightIndex].position.xyz) : 0;
+        int slot = face < 4 ? maps.slots[face] : maps.faceSlots[face - 4];
+        if (slot < 0) {
+            return 1.0;
+        }
+        gsDebugMap = gsDebugMap < 0 ? face : gsDebugMap;
+        int levels = maps.kind.y;
+        gsVirtualPageLayer = maps.kind.w + face;
+        gsVirtualFaceMaps = true;
+        // Level 0's entry under the receiver names the finest resident level over it.
+        vec4 clip = gsShadowMatrix[slot] * vec4(worldPosition, 1.0);
+        int level = 0;
+        if (clip.w > 0.0) {
+            ivec2 page = clamp(gsVirtualPageAt(clip.xy / clip.w * gsShadowTexel[slot].x), ivec2(0),
+                               ivec2(gsVirtualPages.x - 1));
+            uint entry = texelFetch(gsShadowPageTable, ivec3(page, gsVirtualPageLayer), 0).r;
+            level = entry != 0u ? gsVirtualEntryLevel(entry) : 0;
+        }
+        float visibility = 1.0;
+        for (int attempt = 0; attempt < levels && level < levels; ++attempt) {
+            gsVirtualLevelIndex = level;
+            gsVirtualTableLevel = level;
+            gsVirtualLevelScale = exp2(-float(level));
+            visibility = gsShadowMapVisibility(slot, fragment);
+            if (visibility >= 0.0) {
+                break;
+            }
+            level = max(gsVirtualNextLevel, level + 1);
+        }
+        gsVirtualPageLayer = -1;
+        gsVirtualTableLevel = 0;
+        gsVirtualLevelScale = 1.0;
+        gsVirtualFaceMaps = false;
+        return visibility < 0.0 ? 1.0 : visibility;
     }
 #endif
 #ifdef GS_SHADOW_LAYOUT_SINGLE

@@ -463,6 +463,18 @@ int gsVirtualLevel(float unitFootprint, float pixelSize, int base, int count) {
     return clamp(int(level), base, base + count - 1);
 }
 
+// Virtual maps of spot and point lights: the mip level, of `levels`, a receiver asks for in a perspective map,
+// level m having texels 2^m level-0 texels wide. `texelPerPixelX`/`Y` are the receiver's level-0 texel
+// coordinates per pixel, `pixelTexels` its pixel's world size in level-0 texels there; the rule is
+// gsVirtualLevel's with level-0 texels as the unit of length, aiming at `texelPixels` (ShadowSettings::
+// virtualTexelPixels) pixels a texel.
+int gsVirtualFaceLevel(vec2 texelPerPixelX, vec2 texelPerPixelY, float pixelTexels, float texelPixels,
+                       int levels) {
+    float footprint = gsTexelFootprintPixels(texelPerPixelX, texelPerPixelY);
+    footprint = footprint < GS_FOOTPRINT_UNBOUNDED ? footprint / texelPixels : footprint;
+    return gsVirtualLevel(footprint, pixelTexels * texelPixels, 0, levels);
+}
+
 // The pages a lookup at window texel `texel` reads when its offsets and kernel reach `reach` texels: from
 // `low` to `high` inclusive, clamped to the window of `pagesPerSide` pages of `pageSize` texels.
 void gsVirtualPageSpan(vec2 texel, float reach, float pageSize, int pagesPerSide, GS_OUT(ivec2) low,
