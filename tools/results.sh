@@ -158,6 +158,10 @@ done
 "$bench" --scene apron-merged --scene terrain-low --scene terrain --scene knob --scene cylinder-engine \
     --techniques default --resolutions 2048 --config "m1:mapAllocation=virtual" --config "m2:mapAllocation=virtual,virtualTexelPixels=2" \
     --config "m4:mapAllocation=virtual,virtualTexelPixels=4" --accuracy-only --walk 30 --out "$work/virtual-texels"
+#     Spot and point lights: the room's two point lights and the spheres' spot, the default technique and msm (the
+#     room's 960 MiB of fitted moment faces), fitted and virtual.
+"$bench" --scene room --scene spheres --techniques default,msm --resolutions 2048 --config "virtual:mapAllocation=virtual" \
+    --config "virtual-msm:technique=msm,mapAllocation=virtual" --frames 5 --walk 30 --out "$work/virtual-lights"
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results

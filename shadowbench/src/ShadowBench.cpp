@@ -346,15 +346,17 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
         const auto read = renderFloat(slotEngine, scene.scene_, scene.camera_, options_.size);
         std::vector<float> slots(read.size());
         std::vector<float> pageEdges(read.size());
+        std::vector<float> levels(read.size());
         for (std::size_t i = 0; i < read.size(); ++i) {
             slots[i] = read[i].x;
             pageEdges[i] = read[i].y;
+            levels[i] = read[i].z;
         }
         accuracy.metrics.seams = seamErrors(
             accuracy.classes, accuracy.truth, accuracy.visibility, pageEdges,
             static_cast<float>(shadows::virtualPageBorderTexels(shadows::ShadowPlan::resolve(settings))));
         accuracy.footprints = texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps,
-                                              shadows::kVirtualResolution, slots);
+                                              shadows::kVirtualResolution, slots, levels);
     } else {
         accuracy.footprints =
             texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps, settings.resolution);
@@ -538,7 +540,7 @@ std::string_view toString(BandUnit unit) {
 std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
                                    std::span<const Surface> surfaces,
                                    std::span<const shadows::LightProjection> maps, int resolution,
-                                   std::span<const float> slots) {
+                                   std::span<const float> slots, std::span<const float> levels) {
     std::vector<float> footprints(positions.size(), -1.0f);
     const auto index = [&](int x, int y) {
         return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
@@ -564,12 +566,16 @@ std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> p
                 map = static_cast<std::size_t>(slot);
             }
             const glm::mat4& toShadow = maps[map].worldToShadow;
+            float texels = static_cast<float>(resolution);
+            if (!levels.empty() && maps[map].perspective && levels[i] > 0.0f && levels[i] < 32.0f) {
+                texels = std::ldexp(texels, -static_cast<int>(levels[i]));
+            }
             const auto texelAt = [&](std::size_t j) -> std::optional<glm::vec2> {
                 const glm::vec4 s = toShadow * glm::vec4(positions[j], 1.0f);
                 if (surfaces[j] == Surface::None || !(s.w > 0.0f)) {
                     return std::nullopt;
                 }
-                return glm::vec2(s) / s.w * static_cast<float>(resolution);
+                return glm::vec2(s) / s.w * texels;
             };
             const glm::vec2 centre = *texelAt(i);
             // The one-sided difference towards the nearer neighbour in texels: the other may lie across a

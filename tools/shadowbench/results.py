@@ -670,18 +670,8 @@ def seams(r):
     return f"{m['pixels']}: {100 * m['errorRate']:.2f} % / {100 * m['interiorErrorRate']:.2f} %"
 
 
-def virtual_section(timed, suns):
-    """Virtual maps against the default fitted maps: density, pages, memory, edges and frame time beside VDSM."""
-    out.append("## Virtual maps\n")
-    out.append(f"The default technique with whole fitted maps (`{timed['defaultTechnique']}-2048-d24`) and with virtual "
-               "maps (`virtual`: `mapAllocation` `virtual`, 64 MiB of 128² pages, docs/SHADOWS.md \"Virtual maps\"), "
-               f"{timed['width']}x{timed['height']}, every scene under its own light; osgShadow's ViewDependentShadowMap "
-               "(`osg-vdsm`) where the peer has the scene. m as in \"Defaults\", measured in the clipmap level each "
-               "pixel actually read. Pages: drawn in the cold first frame (the same view again draws none), and per "
-               "frame while the camera walks 1.5 units/s at 30 frames/s for "
-               f"{timed.get('walkFrames', 30)} frames, in texels (borders included) as multiples of the lit receiver "
-               "pixels. Times are the static view's frames (no page drawn), "
-               f"{timed['timingMethod']}; the peer's are from its own run of the same scene, camera and light.\n")
+def virtual_table(timed):
+    """The rows of a virtual-maps run (fitted and virtual configurations, a peer where present) and the goals' tally."""
     lines = ["| scene | configuration | m ≤ 1 / p99 / p99.9 | edges p95 px | meets the floor | cold pages (× lit px) | "
              "walk (× lit px per frame) | coarsened | memory | shadow ms | lighting ms | frame ms | frame / VDSM |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
@@ -714,6 +704,22 @@ def virtual_section(timed, suns):
                 if peer:
                     summary["peers"] += 1
                     summary["frame"] += frame_ms(r) <= 0.6 * frame_ms(peer)
+    return lines, summary
+
+
+def virtual_section(timed, suns):
+    """Virtual maps against the default fitted maps: density, pages, memory, edges and frame time beside VDSM."""
+    out.append("## Virtual maps\n")
+    out.append(f"The default technique with whole fitted maps (`{timed['defaultTechnique']}-2048-d24`) and with virtual "
+               "maps (`virtual`: `mapAllocation` `virtual`, 64 MiB of 128² pages, docs/SHADOWS.md \"Virtual maps\"), "
+               f"{timed['width']}x{timed['height']}, every scene under its own light; osgShadow's ViewDependentShadowMap "
+               "(`osg-vdsm`) where the peer has the scene. m as in \"Defaults\", measured in the clipmap level each "
+               "pixel actually read. Pages: drawn in the cold first frame (the same view again draws none), and per "
+               "frame while the camera walks 1.5 units/s at 30 frames/s for "
+               f"{timed.get('walkFrames', 30)} frames, in texels (borders included) as multiples of the lit receiver "
+               "pixels. Times are the static view's frames (no page drawn), "
+               f"{timed['timingMethod']}; the peer's are from its own run of the same scene, camera and light.\n")
+    lines, summary = virtual_table(timed)
     out.append("\n".join(lines) + "\n")
     out.append(f"Against the goals, of {summary['views']} views: {summary['density']} have ≥ 99 % of lit receivers at "
                f"m ≤ 1 with p99.9 ≤ 1.5; {summary['cold']} draw a cold frame of ≤ 3× the lit receiver pixels; "
@@ -746,6 +752,32 @@ def virtual_section(timed, suns):
                      f"({pages.get('coldTexels', 0) / lit:.1f}×) | {pages.get('coarsened', 0)} | {seams(rows['virtual'])} |")
     out.append(f"The generated apron under suns from 40° to 3°, {suns['width']}x{suns['height']}, accuracy only:\n")
     out.append("\n".join(lines) + "\n")
+
+
+def virtual_lights_section(lights):
+    """Spot and point lights through virtual maps: the room's faces and the spheres' spot, fitted and virtual."""
+    out.append("### Spot and point lights\n")
+    out.append("Spot lights and point lights' cube faces through virtual maps (one 16k² perspective map with mip levels "
+               "each, docs/SHADOWS.md \"Virtual maps\"), against whole 2048² fitted maps, for the default technique "
+               f"and msm (`virtual-msm`), {lights['width']}x{lights['height']}, columns as above. Since these runs "
+               "the budget holds the page tables and request bits too: memory is everything the virtual maps "
+               "hold.\n")
+    lines, summary = virtual_table(lights)
+    out.append("\n".join(lines) + "\n")
+    fitted = {(r["scene"], r["settings"]["technique"]): r for r in lights["results"]
+              if r["settings"]["mapAllocation"] == "fitted"}
+    for r in lights["results"]:
+        if r["settings"]["mapAllocation"] != "virtual":
+            continue
+        f = fitted.get((r["scene"], r["settings"]["technique"]))
+        if f:
+            pages = r["pages"]
+            out.append(f"- {r['scene']} `{r['label']}`: {f['shadowBytes'] / 2**20:.0f} MiB fitted → "
+                       f"{r['shadowBytes'] / 2**20:.1f} MiB virtual; {pages['coldRequested']} pages asked for, "
+                       f"{pages['poolPages']} in the pool, {pages['coarsened']} requests coarsened.")
+    out.append("\nWhere the pool holds fewer pages than the pixels ask for (the room: two lights, six faces each, and "
+               "walls at grazing angles to both), whole levels give way to their parents and the density falls "
+               "below the fitted maps'; a larger `virtualBudgetMiB` or `virtualTexelPixels` 2 trades it back.\n")
 
 
 def virtual_texels_section(texels):
@@ -788,6 +820,8 @@ path_shimmer_section(load("path-shimmer"))
 if (work / "virtual" / "results.json").exists():
     virtual_section(load("virtual"), load("virtual-suns"))
     virtual_texels_section(load("virtual-texels"))
+    if (work / "virtual-lights" / "results.json").exists():
+        virtual_lights_section(load("virtual-lights"))
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))

@@ -282,11 +282,13 @@ private:
 /// its neighbours on the same surface (the nearer one in texels along each axis, as a derivative that does
 /// not cross a silhouette); -1 where no map holds it or it has no such neighbour on an axis. Given `slots`
 /// (the map each pixel read, ShadowDebugView::Slot; -1 none), each pixel's own map instead of the finest: a
-/// virtual map's level is the finest resident page's, which only the lighting pass knows.
+/// virtual map's level is the finest resident page's, which only the lighting pass knows. With `levels` too
+/// (the slot view's blue), a perspective map's pixel reads mip level `levels[i]`, of resolution / 2^level
+/// texels a side.
 std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> positions,
                                    std::span<const Surface> surfaces,
                                    std::span<const shadows::LightProjection> maps, int resolution,
-                                   std::span<const float> slots = {});
+                                   std::span<const float> slots = {}, std::span<const float> levels = {});
 
 /// @brief Texture reads of the shadow maps per lookup with `settings`: the kernel's taps (jittered: every
 /// tap, the most an early out leaves), plus the reads of the point gradient (stored: 1; central differences:

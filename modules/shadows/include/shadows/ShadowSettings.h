@@ -38,13 +38,14 @@ enum class DirectionalFit {
     Bounds,
 };
 
-/// @brief How a directional light's shadow texels are allocated.
+/// @brief How shadow texels are allocated.
 enum class MapAllocation {
-    /// Whole maps of `resolution`² fitted to the view (one, or one per cascade).
+    /// Whole maps of `resolution`² fitted to the view (one, or one per cascade or cube face).
     Fitted,
-    /// A clipmap of virtual 16k² levels whose pages are drawn only where visible pixels ask for them, at the
-    /// level whose texels are no larger than a pixel there, in a pool of virtualBudgetMiB, cached across
-    /// frames (docs/SHADOWS.md, "Virtual maps"). Spot and point lights keep fitted maps.
+    /// Virtual 16k² maps (a clipmap of levels per directional light, one map with mip levels per spot light
+    /// and cube face) whose pages are drawn only where visible pixels ask for them, at the level whose texels
+    /// are no larger than a pixel there, in virtualBudgetMiB, cached across frames (docs/SHADOWS.md,
+    /// "Virtual maps").
     Virtual,
 };
 
@@ -79,8 +80,9 @@ enum class ShadowDebugView {
     /// bright; grey where no virtual page was read.
     Pages,
     /// The map slot each pixel's lookup read, as a value (-1 where none), in red, and for a virtual page, in
-    /// green, the texels from the lookup to the page's nearest edge (-1 elsewhere): for measurements that
-    /// need to know which map or level a pixel used and whether its kernel straddles pages (float targets).
+    /// green, the texels from the lookup to the page's nearest edge (-1 elsewhere), in blue the level it read
+    /// (a spot map's or cube face's mip level; -1 elsewhere): for measurements that need to know which map or
+    /// level a pixel used and whether its kernel straddles pages (float targets).
     Slot,
 };
 

@@ -510,7 +510,7 @@ void gsShadowDebug(inout vec3 color) {
                                            : vec3(1.0, 0.2, 0.15);
     color = density * (0.35 + 0.65 * gsDebugVisibility);
 #elif defined(GS_SHADOW_DEBUG_SLOT)
-    color = vec3(float(gsDebugSlot), gsDebugPageEdge, 0.0);
+    color = vec3(float(gsDebugSlot), gsDebugPageEdge, float(gsDebugPageLevel));
 #elif defined(GS_SHADOW_DEBUG_PAGES)
     const vec3 levels[6] = vec3[6](vec3(1.0, 0.25, 0.25), vec3(0.25, 1.0, 0.25), vec3(0.3, 0.45, 1.0),
                                    vec3(1.0, 0.9, 0.2), vec3(1.0, 0.3, 1.0), vec3(0.2, 1.0, 1.0));
