@@ -205,11 +205,13 @@ VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(const engine::gl::Progra
     } else {
         std::array<glm::mat4, kCubeFaces> faces{};
         int mask = 0;
+        float texelScale = 0.0f; // every face of a light has the same field of view
         for (int face = 0; face < light.faceCount; ++face) {
             const LightProjection& projection = light.faces[static_cast<std::size_t>(face)].face;
             if (projection.valid) {
                 faces[static_cast<std::size_t>(face)] = projection.worldToShadow;
                 mask |= 1 << face;
+                texelScale = projection.texelScale;
             }
         }
         glUniformMatrix4fv(mark.uniformLocation("uFaceToShadow"), kCubeFaces, GL_FALSE,
@@ -220,8 +222,7 @@ VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(const engine::gl::Progra
         glUniform3fv(mark.uniformLocation("uSpotDirection"), 1, glm::value_ptr(light.direction));
         glUniform1f(mark.uniformLocation("uConeCosine"), light.coneCosine);
         glUniform1f(mark.uniformLocation("uRange"), light.range);
-        glUniform1f(mark.uniformLocation("uTexelScale"),
-                    light.faces[0].face.valid ? light.faces[0].face.texelScale : 0.0f);
+        glUniform1f(mark.uniformLocation("uTexelScale"), texelScale);
     }
     glBindTextureUnit(0, samplesDepth_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, requests_->id());
