@@ -80,20 +80,29 @@ struct AgreementCase {
     ShadowTechnique technique;
     /// The PCF pattern's radius, texels (a wide kernel straddles pages more often).
     float pcfRadius = ShadowSettings{}.pcfRadius;
+    /// The moments' blur, texels (blurred within each page's tile, its border included).
+    int momentBlurRadius = 0;
+
+    [[nodiscard]] ShadowSettings settings() const {
+        ShadowSettings result = virtualSettings(technique);
+        result.pcfRadius = pcfRadius;
+        result.momentBlurRadius = momentBlurRadius;
+        return result;
+    }
 };
 
 class VirtualShadowMapsAgree : public ::testing::TestWithParam<AgreementCase> {};
 
-/// Renders `loaded` with whole fitted maps and with virtual maps: both show its shadow (over 5 % of the
-/// pixels), every page request is served, and at most `perMille` of the pixels differ (along the shadows'
-/// edges, where the pages' other texels place them differently; at 160x120 an edge pixel is ~0.6 % of the
-/// image).
-void expectAgreesWithWholeMaps(content::LoadedScene& loaded, ShadowTechnique technique,
+/// Renders `loaded` with `settings` (virtual maps) and with whole fitted maps otherwise alike: both show its
+/// shadow (over 5 % of the pixels), every page request is served, and at most `perMille` of the pixels differ
+/// (along the shadows' edges, where the pages' other texels place them differently; at 160x120 an edge pixel
+/// is ~0.6 % of the image).
+void expectAgreesWithWholeMaps(content::LoadedScene& loaded, const ShadowSettings& settings,
                                std::size_t perMille) {
-    ShadowSettings fitted = virtualSettings(technique);
+    ShadowSettings fitted = settings;
     fitted.mapAllocation = MapAllocation::Fitted;
     VirtualRig whole(loaded, fitted);
-    VirtualRig paged(loaded, virtualSettings(technique));
+    VirtualRig paged(loaded, settings);
     const engine::Image reference = whole.frame();
     const engine::Image image = paged.frame();
     const ShadowStats stats = paged.module->stats();
@@ -108,7 +117,7 @@ void expectAgreesWithWholeMaps(content::LoadedScene& loaded, ShadowTechnique tec
 TEST_P(VirtualShadowMapsAgree, WithAWholeMap) {
     glTestContext();
     content::LoadedScene loaded = loadVirtualScene("knob");
-    expectAgreesWithWholeMaps(loaded, GetParam().technique, 5);
+    expectAgreesWithWholeMaps(loaded, GetParam().settings(), 5);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -123,7 +132,9 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"pcf_jittered", ShadowTechnique::JitteredPcf},
                       AgreementCase{"vsm", ShadowTechnique::Vsm},
                       AgreementCase{"evsm", ShadowTechnique::Evsm},
-                      AgreementCase{"msm", ShadowTechnique::Msm}),
+                      AgreementCase{"msm", ShadowTechnique::Msm},
+                      AgreementCase{"evsm_blurred", ShadowTechnique::Evsm, ShadowSettings{}.pcfRadius, 2},
+                      AgreementCase{"vsm_blurred", ShadowTechnique::Vsm, ShadowSettings{}.pcfRadius, 3}),
     [](const ::testing::TestParamInfo<AgreementCase>& value) { return value.param.name; });
 
 /// Visibility (red) or the slot view (red slot, green texels to the page's edge) of one frame, in floats.
@@ -142,8 +153,7 @@ class VirtualPageSeams : public ::testing::TestWithParam<AgreementCase> {};
 TEST_P(VirtualPageSeams, MatchPageInteriors) {
     glTestContext();
     content::LoadedScene loaded = loadVirtualScene("knob");
-    ShadowSettings settings = virtualSettings(GetParam().technique);
-    settings.pcfRadius = GetParam().pcfRadius;
+    ShadowSettings settings = GetParam().settings();
     const std::vector<float> paged = floatFrame(loaded, settings);
     ShadowSettings fitted = settings;
     fitted.mapAllocation = MapAllocation::Fitted;
@@ -184,8 +194,29 @@ INSTANTIATE_TEST_SUITE_P(
                       AgreementCase{"pcf_gsm_average", ShadowTechnique::PcfGsmAverageGradient},
                       AgreementCase{"pcf_gsm_average_wide", ShadowTechnique::PcfGsmAverageGradient, 3.0f},
                       AgreementCase{"evsm", ShadowTechnique::Evsm},
-                      AgreementCase{"msm", ShadowTechnique::Msm}),
+                      AgreementCase{"msm", ShadowTechnique::Msm},
+                      AgreementCase{"evsm_blurred", ShadowTechnique::Evsm, ShadowSettings{}.pcfRadius, 3}),
     [](const ::testing::TestParamInfo<AgreementCase>& value) { return value.param.name; });
+
+// The moments of each new page are blurred within its tile: the shadow's edge widens into a penumbra as a
+// whole map's does (the agreement and seam cases above show it stays where a whole map puts it).
+TEST(VirtualShadowMaps, MomentsAreBlurredPerPage) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    const auto penumbra = [&](int radius) {
+        ShadowSettings settings = virtualSettings(ShadowTechnique::Evsm);
+        settings.momentBlurRadius = radius;
+        const std::vector<float> frame = floatFrame(loaded, settings);
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < frame.size(); i += 4) {
+            count += frame[i] > 0.1f && frame[i] < 0.9f;
+        }
+        return count;
+    };
+    const std::size_t sharp = penumbra(0);
+    const std::size_t blurred = penumbra(3);
+    EXPECT_GT(blurred, sharp * 3 / 2) << sharp << " penumbra pixels unblurred";
+}
 
 TEST(VirtualShadowMaps, OverBudgetFallsBackToCoarserLevels) {
     glTestContext();
@@ -252,7 +283,7 @@ TEST_P(VirtualFaceMapsAgree, WithWholeMaps) {
     glTestContext();
     content::LoadedScene loaded =
         GetParam().scene == "spot-knob" ? spotKnob() : loadVirtualScene(GetParam().scene);
-    expectAgreesWithWholeMaps(loaded, GetParam().technique, GetParam().perMille);
+    expectAgreesWithWholeMaps(loaded, virtualSettings(GetParam().technique), GetParam().perMille);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -483,7 +483,7 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
-    if (plan_.blursMoments && maps_) {
+    if (plan_.blursMoments && (maps_ || virtualFrame_)) {
         blurMoments();
     }
 }
@@ -499,6 +499,12 @@ void ShadowModule::blurMoments() {
     }
     fullscreenVertexArray_->bind();
     glBindSampler(mapUnit_, 0);
+    if (virtualFrame_) {
+        virtual_->blurPages(blur, mapUnit_);
+        glEnable(GL_DEPTH_TEST);
+        return;
+    }
+    blur.set("uSourceOffset", glm::ivec2(0));
     for (int layer = 0; layer < maps_->layers(); ++layer) {
         // Horizontal into the temporary layer, then vertical back into the moments' layer, level 0.
         maps_->blurFramebuffer->bind();

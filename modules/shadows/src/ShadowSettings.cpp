@@ -41,10 +41,6 @@ std::vector<std::string> ShadowSettings::validate() const {
                                std::to_string(tile) + " bytes, the page requests " +
                                std::to_string(requests));
         }
-        if (plan.blursMoments) {
-            problems.push_back(
-                "momentBlurRadius must be 0 with mapAllocation virtual (pages are not blurred)");
-        }
     }
     return problems;
 }

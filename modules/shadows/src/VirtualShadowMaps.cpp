@@ -60,8 +60,14 @@ VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const Shado
     }
 }
 
+std::size_t VirtualShadowMaps::blurTileBytes() const {
+    return plan_.blursMoments
+               ? static_cast<std::size_t>(tile_) * static_cast<std::size_t>(tile_) * plan_.momentBytesPerTexel
+               : 0;
+}
+
 void VirtualShadowMaps::allocatePool(int tableLayers) {
-    const std::size_t overhead = virtualOverheadBytes(pageSize_, tableLayers);
+    const std::size_t overhead = virtualOverheadBytes(pageSize_, tableLayers) + blurTileBytes();
     const std::size_t tileBytes = virtualTileBytes(plan_, pageSize_);
     std::size_t tiles = budget_ > overhead ? (budget_ - overhead) / tileBytes : 0;
     if (tiles < 1) {
@@ -82,15 +88,22 @@ void VirtualShadowMaps::allocatePool(int tableLayers) {
         std::clamp<std::size_t>(tiles / perLayer, 1, static_cast<std::size_t>(std::max(maxLayers, 1))));
     pool_ = PagePool(static_cast<int>(perLayer) * layers_);
     ShadowPlan atlasPlan = plan_;
-    atlasPlan.blursMoments = false; // pages are not blurred (ShadowSettings::validate refuses a blur radius)
+    atlasPlan.blursMoments = false; // blurred a tile at a time (blurPages), not a whole layer
     atlas_ = std::make_unique<ShadowMapArray>(tilesPerRow_ * tile_, layers_, atlasPlan);
+    if (plan_.blursMoments && !blurTile_) {
+        blurTile_.emplace(plan_.momentsFormat, glm::ivec2(tile_), 1);
+        blurTileFramebuffer_.emplace("virtual page moments blur");
+        blurTileFramebuffer_->attach(GL_COLOR_ATTACHMENT0, *blurTile_, 0);
+        blurTileFramebuffer_->setDrawBuffers({GL_COLOR_ATTACHMENT0});
+        blurTileFramebuffer_->check();
+    }
     poolTableLayers_ = tableLayers;
     pageTable_.reset();
     uploaded_.clear();
 }
 
 std::size_t VirtualShadowMaps::bytes() const {
-    std::size_t total = atlas_ ? atlas_->bytes(plan_) : 0;
+    std::size_t total = (atlas_ ? atlas_->bytes(plan_) : 0) + (blurTile_ ? blurTileBytes() : 0);
     if (pageTable_) {
         total += virtualOverheadBytes(pageSize_, pageTable_->layers());
     } else if (requests_) {
@@ -499,6 +512,36 @@ void VirtualShadowMaps::uploadPageTables() {
             }
         }
     }
+}
+
+void VirtualShadowMaps::blurPages(const engine::gl::Program& blur, GLuint unit) {
+    if (toRender_.empty() || !blurTile_ || !atlas_->moments) {
+        return;
+    }
+    const int perLayer = tilesPerRow_ * tilesPerRow_;
+    glEnable(GL_SCISSOR_TEST);
+    for (const auto& [tile, key] : toRender_) {
+        const int layer = tile / perLayer;
+        const glm::ivec2 origin = glm::ivec2(tile % tilesPerRow_, (tile % perLayer) / tilesPerRow_) * tile_;
+        // Horizontal, from the tile into the temporary; vertical, back into the tile.
+        blurTileFramebuffer_->bind();
+        glViewport(0, 0, tile_, tile_);
+        glScissor(0, 0, tile_, tile_);
+        glBindTextureUnit(unit, atlas_->moments->id());
+        blur.set("uLayer", layer);
+        blur.set("uDirection", glm::ivec2(1, 0));
+        blur.set("uSourceOffset", origin);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        atlas_->framebuffers[static_cast<std::size_t>(layer)].bind();
+        glViewport(origin.x, origin.y, tile_, tile_);
+        glScissor(origin.x, origin.y, tile_, tile_);
+        glBindTextureUnit(unit, blurTile_->id());
+        blur.set("uLayer", 0);
+        blur.set("uDirection", glm::ivec2(0, 1));
+        blur.set("uSourceOffset", -origin);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void VirtualShadowMaps::render(engine::ModuleHost& host, const engine::Scene& scene,

@@ -8,6 +8,7 @@
 
 #include <engine/Module.h>
 #include <engine/gl/Buffer.h>
+#include <engine/gl/Framebuffer.h>
 #include <engine/gl/Program.h>
 #include <engine/gl/TextureArray.h>
 
@@ -74,6 +75,11 @@ public:
     void render(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
                 const glm::vec4& clearMoments);
 
+    /// @brief Blurs the moments of this frame's new pages with `blur` (shaders/shadows/blur.frag, in use, a
+    /// fullscreen triangle bound), each within its tile, through a tile-sized temporary bound to `unit`: the
+    /// border holds the blur's reach (ShadowPlan::kernelReachTexels), so page edges blur as a whole map's
+    /// interior would.
+    void blurPages(const engine::gl::Program& blur, GLuint unit);
     [[nodiscard]] const ShadowMapArray& atlas() const { return *atlas_; }
     [[nodiscard]] GLuint pageTable() const { return pageTable_ ? pageTable_->id() : 0; }
     [[nodiscard]] const VirtualPageStats& stats() const { return stats_; }
@@ -109,6 +115,8 @@ private:
     /// Sizes the pool to what the budget leaves beside `tableLayers` page-table layers and the requests (at
     /// least one page, warned), dropping every page.
     void allocatePool(int tableLayers);
+    /// GPU bytes of the blur's temporary tile (none unless the plan blurs moments).
+    [[nodiscard]] std::size_t blurTileBytes() const;
     void invalidateMovedCasters(const std::vector<Light>& lights,
                                 const std::map<engine::EntityId, Aabb>& casters);
 
@@ -123,6 +131,9 @@ private:
     int poolTableLayers_ = -1; // the page-table layers the pool was sized beside
     PagePool pool_;
     std::unique_ptr<ShadowMapArray> atlas_;
+    /// The moment blur's horizontal pass of one tile (ShadowPlan::blursMoments only).
+    std::optional<engine::gl::TextureArray> blurTile_;
+    std::optional<engine::gl::Framebuffer> blurTileFramebuffer_;
     std::optional<engine::gl::TextureArray> pageTable_;
     int pageTableLayers_ = 0;
     std::optional<engine::gl::Buffer> requests_;
