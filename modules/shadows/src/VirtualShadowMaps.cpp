@@ -143,7 +143,7 @@ VirtualShadowMaps::Light VirtualShadowMaps::fitLight(const engine::FrameLight& l
         }
         return entry;
     }
-    entry.faceCount = light.light.type == engine::LightType::Spot ? 1 : kCubeFaces;
+    entry.faceCount = Light::facesOf(light.light.type);
     if (state.faceCount != entry.faceCount) {
         stats_.invalidated += pool_.invalidateLight(light.index);
         state = {};
@@ -397,10 +397,7 @@ VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
 
     int layer = 0;
     for (const engine::FrameLight& light : lights) {
-        const int layers = light.light.type == engine::LightType::Directional ? kClipmapLevels
-                           : light.light.type == engine::LightType::Spot      ? 1
-                                                                              : kCubeFaces;
-        if (layer + layers > kPageTableLayers) {
+        if (layer + Light::pageTableLayers(Light::facesOf(light.light.type)) > kPageTableLayers) {
             continue; // no slots to read it by either (ShadowModule warns)
         }
         Light entry = fitLight(light, fit, boxes);

@@ -58,7 +58,17 @@ public:
         /// Levels a lookup can read: kClipmapLevels, or the perspective maps' mip levels.
         [[nodiscard]] int levels() const { return faceCount == 0 ? kClipmapLevels : faces[0].levels(); }
         /// Layers of the page table.
-        [[nodiscard]] int layers() const { return faceCount == 0 ? kClipmapLevels : faceCount; }
+        [[nodiscard]] int layers() const { return pageTableLayers(faceCount); }
+        /// The faces of a light of `type`: 0 (a clipmap), 1 (spot) or kCubeFaces (point).
+        [[nodiscard]] static int facesOf(engine::LightType type) {
+            return type == engine::LightType::Directional ? 0
+                   : type == engine::LightType::Spot      ? 1
+                                                          : kCubeFaces;
+        }
+        /// Page-table layers of a light with `faceCount` faces: a layer per clipmap level, or per face.
+        [[nodiscard]] static int pageTableLayers(int faceCount) {
+            return faceCount == 0 ? kClipmapLevels : faceCount;
+        }
     };
 
     /// @brief Marks, with `mark` (shaders/shadows/pages.comp), the pages the view's depth image `depth` (of
