@@ -1,5 +1,7 @@
 #include "VirtualShadowMaps.h"
 
+#include "VisibleSamples.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -48,8 +50,11 @@ std::optional<glm::vec4> shadowRect(const glm::mat4& worldToShadow, const Aabb& 
 
 } // namespace
 
-VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const ShadowPlan& plan)
-    : plan_(plan), pageSize_(settings.virtualPageSize), border_(virtualPageBorderTexels(plan)),
+VirtualShadowMaps::VirtualShadowMaps(engine::ModuleHost& host, const ShadowSettings& settings,
+                                     const ShadowPlan& plan, VisibleSamples& samples,
+                                     const engine::gl::Program& mark, OnceWarnings& warnings)
+    : host_(host), samples_(samples), mark_(mark), warnings_(warnings), budgetMiB_(settings.virtualBudgetMiB),
+      plan_(plan), pageSize_(settings.virtualPageSize), border_(virtualPageBorderTexels(plan)),
       tile_(settings.virtualPageSize + 2 * virtualPageBorderTexels(plan)),
       texelPixels_(settings.virtualTexelPixels),
       budget_(static_cast<std::size_t>(settings.virtualBudgetMiB) << 20), pool_(0) {
@@ -59,6 +64,8 @@ VirtualShadowMaps::VirtualShadowMaps(const ShadowSettings& settings, const Shado
                                     std::to_string(tile_) + "² texels beside the page requests");
     }
 }
+
+VirtualShadowMaps::~VirtualShadowMaps() = default;
 
 std::size_t VirtualShadowMaps::blurTileBytes() const {
     return plan_.blursMoments
@@ -88,7 +95,7 @@ void VirtualShadowMaps::allocatePool(int tableLayers) {
         std::clamp<std::size_t>(tiles / perLayer, 1, static_cast<std::size_t>(std::max(maxLayers, 1))));
     pool_ = PagePool(static_cast<int>(perLayer) * layers_);
     ShadowPlan atlasPlan = plan_;
-    atlasPlan.blursMoments = false; // blurred a tile at a time (blurPages), not a whole layer
+    atlasPlan.blursMoments = false; // blurred a tile at a time (blurMoments), not a whole layer
     atlas_ = std::make_unique<ShadowMapArray>(tilesPerRow_ * tile_, layers_, atlasPlan);
     if (plan_.blursMoments && !blurTile_) {
         blurTile_.emplace(plan_.momentsFormat, glm::ivec2(tile_), 1);
@@ -112,13 +119,11 @@ std::size_t VirtualShadowMaps::bytes() const {
     return total;
 }
 
-glm::ivec4 VirtualShadowMaps::pagesUniform() const {
-    return {kVirtualResolution / pageSize_, tilesPerRow_, tilesPerRow_ * tile_, 0};
-}
-
-glm::vec4 VirtualShadowMaps::pageUniform() const {
-    return {static_cast<float>(pageSize_), static_cast<float>(tile_), static_cast<float>(border_),
-            1.0f / static_cast<float>(tilesPerRow_ * tile_)};
+void VirtualShadowMaps::describe(ShadowBlock& block) const {
+    block.virtualPages = glm::ivec4(kVirtualResolution / pageSize_, tilesPerRow_, tilesPerRow_ * tile_, 0);
+    block.virtualPage =
+        glm::vec4(static_cast<float>(pageSize_), static_cast<float>(tile_), static_cast<float>(border_),
+                  1.0f / static_cast<float>(tilesPerRow_ * tile_));
 }
 
 VirtualShadowMaps::Light VirtualShadowMaps::fitLight(const engine::FrameLight& light, const FitView& fit,
@@ -186,8 +191,9 @@ VirtualShadowMaps::Light VirtualShadowMaps::fitLight(const engine::FrameLight& l
     return entry;
 }
 
-VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(const engine::gl::Program& mark, Light& light,
-                                                        const FitView& fit, int levelBase, glm::ivec2 size) {
+VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(Light& light, const FitView& fit, int levelBase,
+                                                        glm::ivec2 size) {
+    const engine::gl::Program& mark = mark_;
     const int side = kVirtualResolution / pageSize_;
     const glm::mat4 cameraWorld = glm::inverse(fit.view);
     const glm::vec3 camera(cameraWorld[3]);
@@ -375,8 +381,7 @@ void VirtualShadowMaps::invalidateMovedCasters(const std::vector<Light>& lights,
 }
 
 std::vector<VirtualShadowMaps::Light>
-VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
-                          std::span<const engine::FrameLight> lights,
+VirtualShadowMaps::update(const FitView& fit, std::span<const engine::FrameLight> lights,
                           const std::map<engine::EntityId, Aabb>& casters, std::span<const Aabb> boxes,
                           GLuint depth, glm::ivec2 size) {
     stats_ = {};
@@ -417,7 +422,7 @@ VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
 
     std::vector<PageSet> requested;
     for (Light& light : lights_) {
-        requested.push_back(markPages(mark, light, fit, levelBase, size));
+        requested.push_back(markPages(light, fit, levelBase, size));
         stats_.requested += static_cast<int>(requested.back().size());
     }
     glUseProgram(0);
@@ -441,6 +446,77 @@ VirtualShadowMaps::update(const engine::gl::Program& mark, const FitView& fit,
     toRender_ = std::move(served.render);
     uploadPageTables();
     return lights_;
+}
+
+void VirtualShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
+                                 std::vector<LightMapsBlock>& lights) {
+    std::vector<engine::FrameLight> casting;
+    for (const engine::FrameLight& light : frame.frame.lights) {
+        if (light.light.castsShadows) {
+            casting.push_back(light);
+        }
+    }
+    served_ = !casting.empty();
+    if (!served_) {
+        return;
+    }
+    std::map<engine::EntityId, Aabb> casters; // each entity's world box: pages redraw where one moved
+    for (std::size_t mesh = 0; mesh < frame.boxes.size(); ++mesh) {
+        casters[frame.entities[mesh]].extend(frame.boxes[mesh]);
+    }
+    samples_.draw(host_, frame.frame, frame.fit);
+    const std::vector<Light> served =
+        update(frame.fit, casting, casters, frame.boxes, samples_.depthTexture(), samples_.size());
+    static_assert(kPageTableLayers == kMaxMaps, "a page-table layer per map slot");
+    for (const engine::FrameLight& light : casting) {
+        if (std::none_of(served.begin(), served.end(),
+                         [&](const Light& entry) { return entry.index == light.index; })) {
+            std::cerr << "shadows: light " << light.index << " casts no shadow this frame: its virtual maps' "
+                      << "page tables do not fit the " << kPageTableLayers << " layers beside the others\n";
+        }
+    }
+    for (const Light& light : served) {
+        LightMapsBlock& maps = lights[static_cast<std::size_t>(light.index)];
+        int needed = light.faceCount == 0 ? kClipmapLevels : 0;
+        for (int face = 0; face < light.faceCount; ++face) {
+            needed += light.faces[static_cast<std::size_t>(face)].face.valid ? 1 : 0;
+        }
+        if (slots.size() + static_cast<std::size_t>(needed) > static_cast<std::size_t>(kMaxMaps)) {
+            std::cerr << "shadows: light " << light.index << " casts no shadow this frame: its " << needed
+                      << " virtual maps do not fit the " << kMaxMaps << " map slots beside the others\n";
+            continue;
+        }
+        if (light.faceCount == 0) {
+            const int first = static_cast<int>(slots.size());
+            for (int level = 0; level < kClipmapLevels; ++level) {
+                slots.push_back({light.index,
+                                 light.geometry.levelProjection(light.geometry.finestLevel + level),
+                                 kVirtualResolution});
+            }
+            maps.kind =
+                glm::ivec4(static_cast<int>(LightMapsKind::Virtual), kClipmapLevels, first, light.pageLayer);
+            continue;
+        }
+        // A spot map or cube faces in the fitted layout's slots; the levels are the mip levels of each.
+        for (int face = 0; face < light.faceCount; ++face) {
+            const int slot = addSlot(slots, light.index, light.faces[static_cast<std::size_t>(face)].face,
+                                     kVirtualResolution);
+            if (face < 4) {
+                maps.slots[face] = slot;
+            } else {
+                maps.faceSlots[face - 4] = slot;
+            }
+        }
+        maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::VirtualFaces), light.levels(), light.faceCount,
+                               light.pageLayer);
+    }
+    if ((stats_.coarsened > 0 || stats_.refused > 0) && !warnings_.pageBudget) {
+        std::cerr << "shadows: the page budget (virtualBudgetMiB " << budgetMiB_ << ", " << stats_.poolPages
+                  << " pages) holds fewer pages than the view asks for: " << stats_.coarsened
+                  << " requests moved to coarser levels, " << stats_.refused
+                  << " left without texels (lit); the stats count them every frame\n";
+        warnings_.pageBudget = true;
+    }
 }
 
 void VirtualShadowMaps::uploadPageTables() {
@@ -511,7 +587,7 @@ void VirtualShadowMaps::uploadPageTables() {
     }
 }
 
-void VirtualShadowMaps::blurPages(const engine::gl::Program& blur, GLuint unit) {
+void VirtualShadowMaps::blurMoments(const engine::gl::Program& blur, GLuint unit) {
     if (toRender_.empty() || !blurTile_ || !atlas_->moments) {
         return;
     }
@@ -541,8 +617,8 @@ void VirtualShadowMaps::blurPages(const engine::gl::Program& blur, GLuint unit) 
     glDisable(GL_SCISSOR_TEST);
 }
 
-void VirtualShadowMaps::render(engine::ModuleHost& host, const engine::Scene& scene,
-                               const engine::gl::Program& program, const glm::vec4& clearMoments) {
+void VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
+                               std::span<const MapSlot>) {
     if (toRender_.empty()) {
         return;
     }
@@ -567,7 +643,7 @@ void VirtualShadowMaps::render(engine::ModuleHost& host, const engine::Scene& sc
             const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
             glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, zero);
         } else if (atlas_->moments) {
-            glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(clearMoments));
+            glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
         }
         glClearDepth(1.0);
         glClear(GL_DEPTH_BUFFER_BIT);
@@ -579,7 +655,7 @@ void VirtualShadowMaps::render(engine::ModuleHost& host, const engine::Scene& sc
         const glm::mat4 viewProjection = projection.projection * projection.view;
         program.set("uLightViewProjection", viewProjection);
         program.set("uDepthRange", projection.depthRange);
-        host.drawMeshes(scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
+        host_.drawMeshes(scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
             program.set("uModel", model);
             return true;
         });

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ShadowMapArray.h"
+#include "MapAllocator.h"
 
 #include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettings.h>
@@ -23,18 +23,44 @@
 
 namespace shadows {
 
+class VisibleSamples;
+
 /// @brief The virtual shadow maps: a clipmap of kClipmapLevels levels per directional light, each a
 /// kVirtualResolution² window of pages around the camera; one perspective map with mip levels per spot light
 /// and per face of a point light (PerspectiveGeometry). Pages are marked from the view's depth image on
 /// the GPU (shaders/shadows/pages.comp), served from one pool of atlas tiles in a fixed budget (PagePool,
 /// least recently used first) and drawn only when new or invalidated. Every lookup goes through the light's
 /// page table (buildPageTable) to the finest resident page over it.
-class VirtualShadowMaps {
+class VirtualShadowMaps final : public MapAllocator {
 public:
     /// @brief A pool in `settings.virtualBudgetMiB` for the plan's formats, allocated with the first frame's
-    /// lights (their page tables share the budget). Throws std::invalid_argument when the budget holds no
-    /// page beside the page requests.
-    VirtualShadowMaps(const ShadowSettings& settings, const ShadowPlan& plan);
+    /// lights (their page tables share the budget); pages are marked with `mark` from the view's depth drawn
+    /// by `samples`, and an overflowing budget is said once in `warnings`. Throws std::invalid_argument when
+    /// the budget holds no page beside the page requests.
+    VirtualShadowMaps(engine::ModuleHost& host, const ShadowSettings& settings, const ShadowPlan& plan,
+                      VisibleSamples& samples, const engine::gl::Program& mark, OnceWarnings& warnings);
+    ~VirtualShadowMaps() override;
+
+    /// @brief Serves the frame's shadow-casting lights from virtual maps: draws the view's depth, marks and
+    /// allocates the pages it asks for (update), and adds each light's clipmap levels or faces as slots. A
+    /// light whose page tables or slots do not fit beside the others casts no shadow, saying so.
+    void allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
+                  std::vector<LightMapsBlock>& lights) override;
+    /// @brief Draws this frame's new pages (the slots are the levels they crop), clearing each tile first.
+    void render(const engine::Scene& scene, const engine::gl::Program& program,
+                std::span<const MapSlot> slots) override;
+    /// @brief Blurs the moments of this frame's new pages, each within its tile, through a tile-sized
+    /// temporary: the border holds the blur's reach (ShadowPlan::kernelReachTexels), so page edges blur as a
+    /// whole map's interior would.
+    void blurMoments(const engine::gl::Program& blur, GLuint unit) override;
+    [[nodiscard]] const ShadowMapArray* sampled() const override { return atlas_.get(); }
+    [[nodiscard]] GLuint pageTable() const override { return pageTable_ ? pageTable_->id() : 0; }
+    /// @brief The page and atlas geometry (ShadowBlock::virtualPages, virtualPage).
+    void describe(ShadowBlock& block) const override;
+    /// @brief GPU bytes: the atlas, the page tables and the request buffer (within the budget).
+    [[nodiscard]] std::size_t bytes() const override;
+    [[nodiscard]] bool servedVirtualMaps() const override { return served_; }
+    [[nodiscard]] VirtualPageStats pageStats() const override { return stats_; }
 
     /// @brief One light's pages this frame.
     struct Light {
@@ -71,36 +97,15 @@ public:
         }
     };
 
-    /// @brief Marks, with `mark` (shaders/shadows/pages.comp), the pages the view's depth image `depth` (of
-    /// `size`, seen through `fit`) asks for, for each light in `lights` (shadow-casting), invalidates the
-    /// pages of casters that moved
-    /// (`casters`: each mesh entity's world box), allocates and uploads the page tables. Returns the lights'
-    /// clipmaps, in order.
-    std::vector<Light> update(const engine::gl::Program& mark, const FitView& fit,
-                              std::span<const engine::FrameLight> lights,
+private:
+    /// Marks (shaders/shadows/pages.comp) the pages the view's depth image `depth` (of `size`, seen through
+    /// `fit`) asks for, for each light in `lights` (shadow-casting), invalidates the pages of casters that
+    /// moved (`casters`: each mesh entity's world box), allocates and uploads the page tables. Returns the
+    /// lights' clipmaps, in order.
+    std::vector<Light> update(const FitView& fit, std::span<const engine::FrameLight> lights,
                               const std::map<engine::EntityId, Aabb>& casters, std::span<const Aabb> boxes,
                               GLuint depth, glm::ivec2 size);
-    /// @brief Draws this frame's new pages with `program` (the shadow pass's, in use), clearing each tile
-    /// first; `clearMoments` is the moments' clear value where the plan stores them.
-    void render(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
-                const glm::vec4& clearMoments);
 
-    /// @brief Blurs the moments of this frame's new pages with `blur` (shaders/shadows/blur.frag, in use, a
-    /// fullscreen triangle bound), each within its tile, through a tile-sized temporary bound to `unit`: the
-    /// border holds the blur's reach (ShadowPlan::kernelReachTexels), so page edges blur as a whole map's
-    /// interior would.
-    void blurPages(const engine::gl::Program& blur, GLuint unit);
-    [[nodiscard]] const ShadowMapArray& atlas() const { return *atlas_; }
-    [[nodiscard]] GLuint pageTable() const { return pageTable_ ? pageTable_->id() : 0; }
-    [[nodiscard]] const VirtualPageStats& stats() const { return stats_; }
-    /// @brief GPU bytes: the atlas, the page tables and the request buffer (within the budget).
-    [[nodiscard]] std::size_t bytes() const;
-    /// @brief x pages per side of a level, y tiles per atlas row, z atlas side.
-    [[nodiscard]] glm::ivec4 pagesUniform() const;
-    /// @brief x page side, y tile side, z border, w 1 / atlas side.
-    [[nodiscard]] glm::vec4 pageUniform() const;
-
-private:
     /// What each light's pages were drawn with: a change redraws them.
     struct LightState {
         int faceCount = -1;
@@ -116,8 +121,7 @@ private:
     Light fitLight(const engine::FrameLight& light, const FitView& fit, std::span<const Aabb> boxes);
     /// Runs `mark` for `light` and reads back its request bits as pages; a clipmap's are clamped to its
     /// kClipmapLevels (which sets the geometry's finest level).
-    PageSet markPages(const engine::gl::Program& mark, Light& light, const FitView& fit, int levelBase,
-                      glm::ivec2 size);
+    PageSet markPages(Light& light, const FitView& fit, int levelBase, glm::ivec2 size);
     /// Over budget, the finest level of the light asking for the most pages gives way to its parents until
     /// the pool holds every light's pages; returns how many requests merged.
     int coarsenToFit(std::vector<PageSet>& requests) const;
@@ -130,6 +134,12 @@ private:
     void invalidateMovedCasters(const std::vector<Light>& lights,
                                 const std::map<engine::EntityId, Aabb>& casters);
 
+    engine::ModuleHost& host_;
+    VisibleSamples& samples_;
+    const engine::gl::Program& mark_;
+    OnceWarnings& warnings_;
+    int budgetMiB_ = 0;
+    bool served_ = false; // the last frame had a shadow-casting light
     ShadowPlan plan_;
     int pageSize_ = 128;
     int border_ = 2;

@@ -18,12 +18,13 @@
 
 namespace shadows {
 
-struct ShadowMapArray;
 struct LightMapsBlock;
+struct MapSlot;
+class MapAllocator;
 class ShadowSamplers;
 class JitterTexture;
 class VisibleSamples;
-class VirtualShadowMaps;
+struct OnceWarnings;
 
 /// @brief Resource and frame counters of the shadow module.
 struct ShadowStats {
@@ -33,7 +34,7 @@ struct ShadowStats {
     /// GPU memory of the allocated shadow maps (depth plus any gradient target), bytes; with virtual maps,
     /// the page pool, the page tables and the request buffer too.
     std::size_t bytes = 0;
-    /// Whether the last frame's directional lights read virtual maps (ShadowSettings::mapAllocation).
+    /// Whether the last frame's lights read virtual maps (ShadowSettings::mapAllocation).
     bool virtualMaps = false;
     /// The virtual maps' page counters in the last frame (zero without virtual maps).
     VirtualPageStats pages;
@@ -96,28 +97,11 @@ public:
     void bindLightingResources(const engine::gl::Program& program, const engine::DrawContext& draw) override;
 
 private:
-    /// One map of the frame: a light's, or one of its cascades or cube faces.
-    struct MapSlot {
-        int lightIndex = -1;
-        LightProjection projection;
-        /// Texels per side: the settings' resolution, or a virtual clipmap level's.
-        int resolution = 0;
-    };
-
     void releaseResources();
+    /// The allocation of the settings' ShadowSettings::mapAllocation, made after a settings change.
+    MapAllocator& allocation();
     /// Fits every shadow-casting light's maps for `frame`, allocates them and uploads the block.
     void fitMaps(const engine::FrameContext& frame);
-    /// Fits `light`'s maps to the visible samples (DirectionalFit::Samples) into `maps` and the slots; false,
-    /// having added nothing, when the view has no sample.
-    bool fitToVisibleSamples(const engine::FrameContext& frame, const engine::FrameLight& light,
-                             const FitView& fit, std::span<const Aabb> boxes, LightMapsBlock& maps);
-    /// The slot of a fitted map of light `lightIndex`, -1 when it has nothing to draw or every slot is taken.
-    int addSlot(int lightIndex, const LightProjection& projection);
-    /// Serves the frame's directional lights from virtual maps (marking, allocating, the page tables) and
-    /// adds their clipmap levels' slots; false, having added nothing, where the frame cannot use them (a spot
-    /// or point light casts too, or the view shows no surface), which it says once.
-    bool fitVirtualMaps(const engine::FrameContext& frame, const FitView& fit, std::span<const Aabb> boxes,
-                        const std::map<engine::EntityId, Aabb>& casters, std::vector<LightMapsBlock>& lights);
     /// Blurs the moments (ShadowPlan::blursMoments).
     void blurMoments();
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
@@ -136,20 +120,18 @@ private:
     GLuint mapUnit_ = 0;
     GLuint gradientUnit_ = 0;
     GLuint jitterUnit_ = 0;
+    GLuint pageTableUnit_ = 0;
     std::unique_ptr<JitterTexture> jitter_;
     std::unique_ptr<engine::gl::VertexArray> fullscreenVertexArray_;
-    std::vector<MapSlot> slots_;
-    std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
+    std::vector<MapSlot> slots_; // this frame's maps, in the block's slot order
+    std::unique_ptr<MapAllocator> allocation_;
     std::unique_ptr<engine::gl::Buffer> shadowBlock_;
     std::optional<FitView> fitView_;
-    std::unique_ptr<VisibleSamples> samples_;    // directional maps fitted to samples only
-    std::unique_ptr<VirtualShadowMaps> virtual_; // mapAllocation virtual only
-    // Compiled once while attached, not with each pool a settings change makes anew.
+    // The view's depth, which fits directional maps or marks virtual pages, and the page-marking program
+    // live while attached: a settings change makes a new allocation, not these anew.
+    std::unique_ptr<VisibleSamples> samples_;
     std::unique_ptr<engine::gl::Program> pageMarkProgram_;
-    bool virtualFrame_ = false; // this frame reads the virtual maps' atlas
-    GLuint pageTableUnit_ = 0;
-    bool warnedPageBudget_ = false;
-    bool warnedNoSamples_ = false;
+    std::unique_ptr<OnceWarnings> warnings_;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;
     engine::ShaderVariantKey layoutKey_ = 0;        // this frame's map layouts

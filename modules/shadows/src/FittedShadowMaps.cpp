@@ -1,0 +1,201 @@
+#include "FittedShadowMaps.h"
+
+#include "VisibleSamples.h"
+
+#include <engine/ForwardRenderer.h>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <array>
+#include <iostream>
+
+namespace shadows {
+
+FittedShadowMaps::FittedShadowMaps(engine::ModuleHost& host, const ShadowSettings& settings,
+                                   const ShadowPlan& plan, VisibleSamples& samples, OnceWarnings& warnings)
+    : host_(host), settings_(settings), plan_(plan), samples_(samples), warnings_(warnings) {}
+
+FittedShadowMaps::~FittedShadowMaps() = default;
+
+std::size_t FittedShadowMaps::bytes() const {
+    return maps_ ? maps_->bytes(plan_) : 0;
+}
+
+bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
+                                           std::vector<MapSlot>& slots, LightMapsBlock& maps) {
+    const auto bounds = samples_.measure(host_, frame.frame, frame.fit, lightView(light.direction),
+                                         settings_.cascadeSplitWeight, settings_.cascadeBlend);
+    if (!bounds) {
+        if (!warnings_.noSamples) {
+            std::cerr
+                << "shadows: the view shows no surface to fit the directional maps to (an empty view, or "
+                   "the camera inside geometry): fitted to mesh bounds instead\n";
+            warnings_.noSamples = true;
+        }
+        return false;
+    }
+    // Only the samples a caster can shadow need texels.
+    const Aabb shadowable =
+        shadowableRegion(light.direction, frame.fit.projection * frame.fit.view, frame.boxes);
+    std::array<LightRect, kSampleSlices> slices{};
+    for (std::size_t s = 0; s < slices.size(); ++s) {
+        slices[s] = clippedTo(bounds->slices[s], shadowable);
+    }
+    const int resolution = settings_.resolution;
+    const int count = settings_.cascadeCount > 0
+                          ? settings_.cascadeCount
+                          : densityCascadeCount(slices, bounds->sliceDepths, resolution, frame.fit.projection,
+                                                frame.frame.target.size.y);
+    const auto fitted = [&](int cascade) {
+        return fitToSamples(light.direction,
+                            slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], frame.boxes,
+                            resolution, plan_.kernelReachTexels, settings_.texelSnapping);
+    };
+    if (count == 1) {
+        maps.slots.x = addSlot(slots, light.index, fitted(0), resolution);
+        maps.kind.x = drawnKind(maps, LightMapsKind::Single);
+        return true;
+    }
+    for (int cascade = 0; cascade < count; ++cascade) {
+        const auto slice = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
+        // The split itself, not the slice, which starts earlier by the previous cascade's blend band.
+        maps.splitNear[cascade] = cascade == 0 ? bounds->viewDepth.x : bounds->sliceDepths[slice - 1].y;
+        maps.splitFar[cascade] = bounds->sliceDepths[slice].y;
+        if (!slices[slice].empty()) {
+            maps.slots[cascade] = addSlot(slots, light.index, fitted(cascade), resolution);
+        }
+    }
+    maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::Cascades), count, 0, 0);
+    return true;
+}
+
+void FittedShadowMaps::fitToBounds(const AllocationFrame& frame, const engine::FrameLight& light,
+                                   std::optional<glm::vec2> visibleRange, std::vector<MapSlot>& slots,
+                                   LightMapsBlock& maps) const {
+    const int resolution = settings_.resolution;
+    const int count = settings_.cascadeCount > 0
+                          ? settings_.cascadeCount
+                          : automaticCascadeCount(visibleRange.value_or(glm::vec2(1.0f)));
+    if (count == 1 || !visibleRange) {
+        maps.slots.x = addSlot(slots, light.index,
+                               fitDirectionalLight(light.direction, frame.fit.projection * frame.fit.view,
+                                                   frame.boxes, resolution, settings_.texelSnapping),
+                               resolution);
+        maps.kind.x = drawnKind(maps, LightMapsKind::Single);
+        return;
+    }
+    const std::vector<float> splits =
+        cascadeSplits(visibleRange->x, visibleRange->y, count, settings_.cascadeSplitWeight);
+    for (int cascade = 0; cascade < count; ++cascade) {
+        const auto c = static_cast<std::size_t>(cascade);
+        // A cascade also covers the previous one's blend band, which fades into it.
+        const float sliceNear =
+            splits[c] - (cascade > 0 ? settings_.cascadeBlend * (splits[c] - splits[c - 1]) : 0.0f);
+        maps.splitNear[cascade] = splits[c];
+        maps.splitFar[cascade] = splits[c + 1];
+        if (hasReceiversBetween(frame.fit, frame.boxes, sliceNear, splits[c + 1])) {
+            maps.slots[cascade] = addSlot(slots, light.index,
+                                          fitCascade(light.direction, frame.fit, sliceNear, splits[c + 1],
+                                                     frame.boxes, resolution, settings_.texelSnapping),
+                                          resolution);
+        }
+    }
+    maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::Cascades), count, 0, 0);
+}
+
+void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
+                                std::vector<LightMapsBlock>& lights) {
+    const int resolution = settings_.resolution;
+    // Where the receivers in view lie in depth: the cascades' range, and their automatic count.
+    const std::optional<glm::vec2> visibleRange = visibleDepthRange(frame.fit, frame.boxes);
+    for (const engine::FrameLight& light : frame.frame.lights) {
+        LightMapsBlock& maps = lights[static_cast<std::size_t>(light.index)];
+        if (!light.light.castsShadows) {
+            continue;
+        }
+        switch (light.light.type) {
+        case engine::LightType::Directional:
+            if (settings_.directionalFit != DirectionalFit::Samples ||
+                !fitToVisibleSamples(frame, light, slots, maps)) {
+                fitToBounds(frame, light, visibleRange, slots, maps);
+            }
+            break;
+        case engine::LightType::Spot:
+            maps.slots.x = addSlot(slots, light.index,
+                                   fitSpotLight(light.position, light.direction, light.light.outerConeAngle,
+                                                light.light.range, frame.boxes, resolution),
+                                   resolution);
+            maps.kind.x = drawnKind(maps, LightMapsKind::Single);
+            break;
+        case engine::LightType::Point:
+            for (int face = 0; face < kCubeFaces; ++face) {
+                const int slot = addSlot(slots, light.index,
+                                         fitPointLightFace(light.position, face, light.light.range,
+                                                           frame.fit.projection * frame.fit.view, frame.boxes,
+                                                           resolution, plan_.kernelReachTexels),
+                                         resolution);
+                if (face < 4) {
+                    maps.slots[face] = slot;
+                } else {
+                    maps.faceSlots[face - 4] = slot;
+                }
+            }
+            maps.kind.x = drawnKind(maps, LightMapsKind::Cube);
+            break;
+        }
+    }
+    if (slots.empty()) {
+        maps_.reset(); // nothing casts this frame: give the memory back
+    } else if (!maps_ || maps_->layers() != static_cast<int>(slots.size())) {
+        // The arrays hold exactly the maps in use; a change in their number reallocates them.
+        maps_ = std::make_unique<ShadowMapArray>(resolution, static_cast<int>(slots.size()), plan_);
+    }
+}
+
+void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
+                              std::span<const MapSlot> slots) {
+    for (std::size_t layer = 0; maps_ && layer < slots.size(); ++layer) {
+        const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
+        const LightProjection& projection = slots[layer].projection;
+        framebuffer.bind();
+        glViewport(0, 0, settings_.resolution, settings_.resolution);
+        glClearDepth(1.0);
+        if (maps_->gradient) {
+            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
+        } else if (maps_->moments) {
+            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
+        }
+        glClear(GL_DEPTH_BUFFER_BIT);
+        const glm::mat4 lightViewProjection = projection.projection * projection.view;
+        program.set("uLightViewProjection", lightViewProjection);
+        program.set("uDepthRange", projection.depthRange);
+        // Culled to the map's own clip volume: casters outside it could not write a texel.
+        host_.drawMeshes(scene, lightViewProjection, [&](engine::EntityId, const glm::mat4& model) {
+            program.set("uModel", model);
+            return true;
+        });
+    }
+}
+
+void FittedShadowMaps::blurMoments(const engine::gl::Program& blur, GLuint unit) {
+    if (!maps_ || !maps_->blurFramebuffer) {
+        return;
+    }
+    blur.set("uSourceOffset", glm::ivec2(0));
+    for (int layer = 0; layer < maps_->layers(); ++layer) {
+        // Horizontal into the temporary layer, then vertical back into the moments' layer, level 0.
+        maps_->blurFramebuffer->bind();
+        glBindTextureUnit(unit, maps_->moments->id());
+        blur.set("uLayer", layer);
+        blur.set("uDirection", glm::ivec2(1, 0));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        maps_->framebuffers[static_cast<std::size_t>(layer)].bind();
+        glBindTextureUnit(unit, maps_->blurTemporary->id());
+        blur.set("uLayer", 0);
+        blur.set("uDirection", glm::ivec2(0, 1));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+}
+
+} // namespace shadows

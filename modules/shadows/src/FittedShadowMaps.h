@@ -1,0 +1,52 @@
+#pragma once
+
+#include "MapAllocator.h"
+
+#include <shadows/ShadowPlan.h>
+#include <shadows/ShadowSettings.h>
+
+#include <memory>
+
+namespace shadows {
+
+class VisibleSamples;
+
+/// @brief Whole shadow maps of ShadowSettings::resolution² texels, fitted to the view (LightFrustum.h): one
+/// per spot light, one or 2–4 cascades per directional light (to the visible samples of a depth pass of the
+/// view, or to mesh bounds), a cube face per point light with visible receivers. Every map is a layer of one
+/// ShadowMapArray, reallocated only when the number of maps changes.
+class FittedShadowMaps final : public MapAllocator {
+public:
+    /// @brief Maps for `settings` in the formats of `plan`; directional lights fitted to samples measure them
+    /// with `samples` and say once in `warnings` when a view has none.
+    FittedShadowMaps(engine::ModuleHost& host, const ShadowSettings& settings, const ShadowPlan& plan,
+                     VisibleSamples& samples, OnceWarnings& warnings);
+    ~FittedShadowMaps() override;
+
+    void allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
+                  std::vector<LightMapsBlock>& lights) override;
+    void render(const engine::Scene& scene, const engine::gl::Program& program,
+                std::span<const MapSlot> slots) override;
+    void blurMoments(const engine::gl::Program& blur, GLuint unit) override;
+    [[nodiscard]] const ShadowMapArray* sampled() const override { return maps_.get(); }
+    [[nodiscard]] std::size_t bytes() const override;
+
+private:
+    /// Fits directional light `light`'s maps to the visible samples into `maps` and `slots`; false, having
+    /// added nothing, when the view has no sample.
+    bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
+                             std::vector<MapSlot>& slots, LightMapsBlock& maps);
+    /// Fits directional light `light`'s maps to the mesh bounds in view.
+    void fitToBounds(const AllocationFrame& frame, const engine::FrameLight& light,
+                     std::optional<glm::vec2> visibleRange, std::vector<MapSlot>& slots,
+                     LightMapsBlock& maps) const;
+
+    engine::ModuleHost& host_;
+    ShadowSettings settings_;
+    ShadowPlan plan_;
+    VisibleSamples& samples_;
+    OnceWarnings& warnings_;
+    std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
+};
+
+} // namespace shadows
