@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -171,6 +172,24 @@ TEST(PagePool, EvictsTheLeastRecentlyUsed) {
     EXPECT_GE(pool.tileOf(key(0, 1)), 0);
 }
 
+TEST(PagePool, GrowingKeepsResidentPagesInTheirTiles) {
+    PagePool pool(2);
+    pool.request(std::vector{key(0, 0), key(0, 1)}, 1);
+    const int tile0 = pool.tileOf(key(0, 0));
+    const int tile1 = pool.tileOf(key(0, 1));
+    pool.grow(4);
+    pool.grow(3); // never shrinks
+    EXPECT_EQ(pool.tiles(), 4);
+    EXPECT_EQ(pool.tileOf(key(0, 0)), tile0);
+    EXPECT_EQ(pool.tileOf(key(0, 1)), tile1);
+    // The new tiles take new pages before anything is evicted.
+    PagePool::FrameResult result = pool.request(std::vector{key(0, 2), key(0, 3)}, 2);
+    EXPECT_EQ(result.render.size(), 2u);
+    EXPECT_EQ(result.refused, 0);
+    EXPECT_EQ(pool.resident(), 4);
+    EXPECT_EQ(pool.tileOf(key(0, 0)), tile0);
+}
+
 TEST(PagePool, RefusesWhatTheFramesOwnPagesFill) {
     PagePool pool(1);
     PagePool::FrameResult result = pool.request(std::vector{key(1, 0), key(0, 0)}, 1);
@@ -195,6 +214,64 @@ TEST(PagePool, InvalidatesOnlyPagesUnderTheRect) {
     EXPECT_GE(pool.tileOf(key(0, 0, 0, 1)), 0);
     EXPECT_EQ(pool.invalidateLight(1), 1);
     EXPECT_EQ(pool.resident(), 1);
+}
+
+/// Level-0 requests of light 0 covering `side`² pages from the origin.
+shadows::PageRequests block(int side) {
+    shadows::PageRequests pages;
+    for (int y = 0; y < side; ++y) {
+        for (int x = 0; x < side; ++x) {
+            pages.insert({0, 0, y, x});
+        }
+    }
+    return pages;
+}
+
+TEST(CoarsenToFit, FillsThePoolAsFullAsTheRequestsAllow) {
+    // 64 pages into 50: five groups of four give way (15 pages fewer), not the whole level (16 left).
+    std::vector requests{block(8)};
+    const std::vector coarsest{15};
+    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 50), 15);
+    EXPECT_EQ(requests[0].size(), 49u);
+    const auto coarser = std::count_if(requests[0].begin(), requests[0].end(),
+                                       [](const auto& page) { return std::get<0>(page) == 1; });
+    EXPECT_EQ(coarser, 5);
+}
+
+TEST(CoarsenToFit, APageWhoseParentIsAskedForGivesWayFirst) {
+    // A full group of four (frees 3 of 4) and a lone page whose parent is requested (frees 1 of 1): one
+    // page over, the lone page merges, and the group keeps its detail.
+    std::vector requests{shadows::PageRequests{
+        {0, 0, 0, 0}, {0, 0, 0, 1}, {0, 0, 1, 0}, {0, 0, 1, 1}, {0, 0, 4, 4}, {1, 0, 2, 2}}};
+    const std::vector coarsest{15};
+    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 5), 1);
+    EXPECT_EQ(requests[0],
+              (shadows::PageRequests{{0, 0, 0, 0}, {0, 0, 0, 1}, {0, 0, 1, 0}, {0, 0, 1, 1}, {1, 0, 2, 2}}));
+}
+
+TEST(CoarsenToFit, TheLightAskingForTheMostGivesWay) {
+    std::vector requests{block(2), block(4)};
+    const std::vector coarsest{15, 15};
+    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 17), 3);
+    EXPECT_EQ(requests[0], block(2));
+    EXPECT_EQ(requests[1].size(), 13u);
+}
+
+TEST(CoarsenToFit, LonePagesMoveTheirLevelUpWhole) {
+    // No group of level 0 frees a page, so the level moves up; on level 1 pairs merge.
+    std::vector requests{shadows::PageRequests{{0, 0, 0, 0}, {0, 0, 0, 2}, {0, 0, 0, 4}, {0, 0, 0, 6}}};
+    const std::vector coarsest{15};
+    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 2), 2);
+    EXPECT_EQ(requests[0], (shadows::PageRequests{{2, 0, 0, 0}, {2, 0, 0, 1}}));
+}
+
+TEST(CoarsenToFit, StopsAtEachLightsCoarsestLevel) {
+    std::vector requests{block(4)};
+    EXPECT_EQ(shadows::coarsenToFit(requests, std::vector{0}, 1), 0);
+    EXPECT_EQ(requests[0], block(4));
+    // One level up at most: 16 pages become 4, over the capacity of 1 (the pool then refuses the rest).
+    EXPECT_EQ(shadows::coarsenToFit(requests, std::vector{1}, 1), 12);
+    EXPECT_EQ(requests[0].size(), 4u);
 }
 
 TEST(BuildPageTable, PointsEveryPageAtTheFinestResidentOverIt) {

@@ -6,6 +6,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 
 namespace shadows {
 
@@ -204,6 +206,20 @@ PagePool::PagePool(int tiles) : tiles_(static_cast<std::size_t>(std::max(tiles, 
     }
 }
 
+void PagePool::grow(int tiles) {
+    const int before = this->tiles();
+    if (tiles <= before) {
+        return;
+    }
+    tiles_.resize(static_cast<std::size_t>(tiles));
+    // Free tiles are taken from the back: the new ones after those free already, lowest first.
+    std::vector<int> added;
+    for (int tile = tiles - 1; tile >= before; --tile) {
+        added.push_back(tile);
+    }
+    free_.insert(free_.begin(), added.begin(), added.end());
+}
+
 void PagePool::release(int tile) {
     Tile& record = tiles_[static_cast<std::size_t>(tile)];
     if (!record.used) {
@@ -366,6 +382,64 @@ std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, int f
         }
     }
     return table;
+}
+
+int coarsenToFit(std::vector<PageRequests>& requests, std::span<const int> coarsestLevels,
+                 std::size_t capacity) {
+    std::size_t count = 0;
+    for (const PageRequests& pages : requests) {
+        count += pages.size();
+    }
+    const std::size_t asked = count;
+    using Parent = std::tuple<int, int, int>; // face, parent page y, parent page x
+    while (count > capacity) {
+        std::optional<std::size_t> largest;
+        for (std::size_t light = 0; light < requests.size(); ++light) {
+            const PageRequests& pages = requests[light];
+            if (!pages.empty() && std::get<0>(*pages.begin()) < coarsestLevels[light] &&
+                (!largest || pages.size() > requests[*largest].size())) {
+                largest = light;
+            }
+        }
+        if (!largest) {
+            break; // the coarsest levels alone exceed the capacity
+        }
+        PageRequests& pages = requests[*largest];
+        const int level = std::get<0>(*pages.begin());
+        std::map<Parent, int> children;
+        for (auto it = pages.begin(); it != pages.end() && std::get<0>(*it) == level; ++it) {
+            const auto& [l, face, y, x] = *it;
+            ++children[{face, y >> 1, x >> 1}];
+        }
+        // Pages freed per page coarsened: 1 with the parent asked for already, else (n - 1) / n.
+        std::optional<Parent> best;
+        double bestRatio = 0.0;
+        for (const auto& [parent, n] : children) {
+            const auto& [face, y, x] = parent;
+            const int freed = pages.contains({level + 1, face, y, x}) ? n : n - 1;
+            const double ratio = static_cast<double>(freed) / static_cast<double>(n);
+            if (ratio > bestRatio) {
+                best = parent;
+                bestRatio = ratio;
+            }
+        }
+        PageRequests coarser;
+        std::size_t merged = 0;
+        for (auto it = pages.begin(); it != pages.end() && std::get<0>(*it) == level;) {
+            const auto& [l, face, y, x] = *it;
+            if (!best || *best == Parent{face, y >> 1, x >> 1}) {
+                coarser.insert({level + 1, face, y >> 1, x >> 1});
+                it = pages.erase(it);
+                ++merged;
+            } else {
+                ++it;
+            }
+        }
+        const std::size_t kept = pages.size();
+        pages.merge(coarser); // parents asked for already stay in `coarser`
+        count = count - merged + (pages.size() - kept);
+    }
+    return static_cast<int>(asked - count);
 }
 
 } // namespace shadows

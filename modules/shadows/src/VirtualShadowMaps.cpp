@@ -73,30 +73,72 @@ std::size_t VirtualShadowMaps::blurTileBytes() const {
                : 0;
 }
 
-void VirtualShadowMaps::allocatePool(int tableLayers) {
+std::size_t VirtualShadowMaps::budgetTiles(int tableLayers) const {
     const std::size_t overhead = virtualOverheadBytes(pageSize_, tableLayers) + blurTileBytes();
     const std::size_t tileBytes = virtualTileBytes(plan_, pageSize_);
-    std::size_t tiles = budget_ > overhead ? (budget_ - overhead) / tileBytes : 0;
-    if (tiles < 1) {
+    return budget_ > overhead ? (budget_ - overhead) / tileBytes : 0;
+}
+
+void VirtualShadowMaps::allocatePool(int tableLayers, std::size_t wanted) {
+    std::size_t affordable = budgetTiles(tableLayers);
+    if (affordable < 1) {
         std::cerr << "shadows: virtualBudgetMiB " << (budget_ >> 20)
-                  << " holds no page beside the page tables "
-                  << "of this frame's lights (" << tableLayers << " layers, " << overhead
+                  << " holds no page beside the page tables of this frame's lights (" << tableLayers
+                  << " layers, " << virtualOverheadBytes(pageSize_, tableLayers) + blurTileBytes()
                   << " bytes with the requests): one page is used, beyond the budget\n";
-        tiles = 1;
+        affordable = 1;
     }
+    const std::size_t tiles = std::clamp<std::size_t>(wanted, 1, affordable);
     GLint maxSize = 0;
     GLint maxLayers = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
-    const int perRowLimit = std::max(maxSize / tile_, 1);
-    tilesPerRow_ = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(tiles))), 1, perRowLimit);
-    const auto perLayer = static_cast<std::size_t>(tilesPerRow_) * static_cast<std::size_t>(tilesPerRow_);
-    layers_ = static_cast<int>(
-        std::clamp<std::size_t>(tiles / perLayer, 1, static_cast<std::size_t>(std::max(maxLayers, 1))));
-    pool_ = PagePool(static_cast<int>(perLayer) * layers_);
+    // Layers of a fixed size for the budget (up to 256 tiles, so a few hundred layers hold the largest
+    // budgets): the pool grows a layer at a time, and a tile lies at the same atlas texel whatever the pool's
+    // size, so a grown pool reads exactly what a new one would.
+    const auto affordableRoot = static_cast<std::size_t>(std::sqrt(static_cast<double>(affordable)));
+    const auto perRow = std::min(
+        affordableRoot,
+        std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(std::sqrt(affordable / 256.0)))));
+    const int tilesPerRow = std::clamp(static_cast<int>(perRow), 1, std::max(maxSize / tile_, 1));
+    const auto perLayer = static_cast<std::size_t>(tilesPerRow) * static_cast<std::size_t>(tilesPerRow);
+    const std::size_t layers =
+        std::clamp<std::size_t>((tiles + perLayer - 1) / perLayer, 1,
+                                std::min(std::max<std::size_t>(affordable / perLayer, 1),
+                                         static_cast<std::size_t>(std::max(maxLayers, 1))));
     ShadowPlan atlasPlan = plan_;
     atlasPlan.blursMoments = false; // blurred a tile at a time (blurMoments), not a whole layer
-    atlas_ = std::make_unique<ShadowMapArray>(tilesPerRow_ * tile_, layers_, atlasPlan);
+    auto atlas = std::make_unique<ShadowMapArray>(tilesPerRow * tile_, static_cast<int>(layers), atlasPlan);
+    const int total = static_cast<int>(perLayer * layers);
+    if (atlas_ && poolTableLayers_ == tableLayers) {
+        // Grown: the resident pages keep their tiles, copied to where those tiles lie in the new atlas.
+        const auto place = [&](int tile, int perSide) {
+            const int layerTiles = perSide * perSide;
+            return glm::ivec3(glm::ivec2(tile % perSide, (tile % layerTiles) / perSide) * tile_,
+                              tile / layerTiles);
+        };
+        pool_.forEachResident([&](const PageKey&, int tile) {
+            const glm::ivec3 from = place(tile, tilesPerRow_);
+            const glm::ivec3 to = place(tile, tilesPerRow);
+            const auto copy = [&](GLuint source, GLuint target) {
+                glCopyImageSubData(source, GL_TEXTURE_2D_ARRAY, 0, from.x, from.y, from.z, target,
+                                   GL_TEXTURE_2D_ARRAY, 0, to.x, to.y, to.z, tile_, tile_, 1);
+            };
+            copy(atlas_->depth.id(), atlas->depth.id());
+            if (atlas_->gradient) {
+                copy(atlas_->gradient->id(), atlas->gradient->id());
+            }
+            if (atlas_->moments) {
+                copy(atlas_->moments->id(), atlas->moments->id());
+            }
+        });
+        pool_.grow(total);
+    } else {
+        pool_ = PagePool(total);
+    }
+    atlas_ = std::move(atlas);
+    tilesPerRow_ = tilesPerRow;
+    layers_ = static_cast<int>(layers);
     if (plan_.blursMoments && !blurTile_) {
         blurTile_.emplace(plan_.momentsFormat, glm::ivec2(tile_), 1);
         blurTileFramebuffer_.emplace("virtual page moments blur");
@@ -104,8 +146,10 @@ void VirtualShadowMaps::allocatePool(int tableLayers) {
         blurTileFramebuffer_->setDrawBuffers({GL_COLOR_ATTACHMENT0});
         blurTileFramebuffer_->check();
     }
-    poolTableLayers_ = tableLayers;
-    pageTable_.reset();
+    if (poolTableLayers_ != tableLayers) {
+        poolTableLayers_ = tableLayers;
+        pageTable_.reset();
+    }
     uploaded_.clear();
 }
 
@@ -191,8 +235,7 @@ VirtualShadowMaps::Light VirtualShadowMaps::fitLight(const engine::FrameLight& l
     return entry;
 }
 
-VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(Light& light, const FitView& fit, int levelBase,
-                                                        glm::ivec2 size) {
+PageRequests VirtualShadowMaps::markPages(Light& light, const FitView& fit, int levelBase, glm::ivec2 size) {
     const engine::gl::Program& mark = mark_;
     const int side = kVirtualResolution / pageSize_;
     const glm::mat4 cameraWorld = glm::inverse(fit.view);
@@ -253,7 +296,7 @@ VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(Light& light, const FitV
     const auto levelBits = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
     std::vector<std::uint32_t> words(requests_->size() / 4);
     glGetNamedBufferSubData(requests_->id(), 0, static_cast<GLsizeiptr>(requests_->size()), words.data());
-    PageSet pages;
+    PageRequests pages;
     int finest = levelBase + kRequestLevels;
     int coarsest = levelBase - 1;
     std::vector<PageKey> keys;
@@ -288,44 +331,6 @@ VirtualShadowMaps::PageSet VirtualShadowMaps::markPages(Light& light, const FitV
         pages.insert({key.level + shift, 0, key.page.y >> shift, key.page.x >> shift});
     }
     return pages;
-}
-
-int VirtualShadowMaps::coarsenToFit(std::vector<PageSet>& requests) const {
-    const auto tiles = static_cast<std::size_t>(pool_.tiles());
-    const auto total = [&] {
-        std::size_t sum = 0;
-        for (const PageSet& pages : requests) {
-            sum += pages.size();
-        }
-        return sum;
-    };
-    const std::size_t asked = total();
-    for (std::size_t count = asked; count > tiles;) {
-        // The light asking for the most pages that still has a level to give way to.
-        std::optional<std::size_t> largest;
-        for (std::size_t light = 0; light < requests.size(); ++light) {
-            const PageSet& pages = requests[light];
-            const int coarsestLevel = lights_[light].faceCount == 0
-                                          ? lights_[light].geometry.finestLevel + kClipmapLevels - 1
-                                          : lights_[light].levels() - 1;
-            if (!pages.empty() && std::get<0>(*pages.begin()) < coarsestLevel &&
-                (!largest || pages.size() > requests[*largest].size())) {
-                largest = light;
-            }
-        }
-        if (!largest) {
-            break; // the coarsest levels alone exceed the pool: the rest is refused (and reported)
-        }
-        PageSet& pages = requests[*largest];
-        const int level = std::get<0>(*pages.begin());
-        PageSet coarser;
-        for (const auto& [l, face, y, x] : pages) {
-            coarser.insert(l == level ? std::tuple{l + 1, face, y >> 1, x >> 1} : std::tuple{l, face, y, x});
-        }
-        pages.swap(coarser);
-        count = total();
-    }
-    return static_cast<int>(asked - total());
 }
 
 void VirtualShadowMaps::invalidateMovedCasters(const std::vector<Light>& lights,
@@ -415,18 +420,29 @@ VirtualShadowMaps::update(const FitView& fit, std::span<const engine::FrameLight
         layer += entry.layers();
         lights_.push_back(entry);
     }
-    if (!atlas_ || poolTableLayers_ != layer) {
-        allocatePool(layer); // new lights' tables take their share of the budget: the cached pages go
+    if (atlas_ && poolTableLayers_ != layer) {
+        atlas_.reset(); // new lights' tables take their share of the budget: the cached pages go
     }
     invalidateMovedCasters(lights_, casters);
 
-    std::vector<PageSet> requested;
+    std::vector<PageRequests> requested;
     for (Light& light : lights_) {
         requested.push_back(markPages(light, fit, levelBase, size));
         stats_.requested += static_cast<int>(requested.back().size());
     }
     glUseProgram(0);
-    stats_.coarsened = coarsenToFit(requested);
+    // The pool grows, by doubling, to what one frame asks for, up to the budget.
+    const auto asked = static_cast<std::size_t>(std::max(stats_.requested, 1));
+    if (!atlas_ || (asked > static_cast<std::size_t>(pool_.tiles()) &&
+                    static_cast<std::size_t>(pool_.tiles()) < budgetTiles(layer))) {
+        allocatePool(layer, std::bit_ceil(asked));
+    }
+    std::vector<int> coarsestLevels;
+    for (const Light& light : lights_) {
+        coarsestLevels.push_back(light.faceCount == 0 ? light.geometry.finestLevel + kClipmapLevels - 1
+                                                      : light.levels() - 1);
+    }
+    stats_.coarsened = coarsenToFit(requested, coarsestLevels, static_cast<std::size_t>(pool_.tiles()));
     std::vector<PageKey> requests;
     for (std::size_t light = 0; light < lights_.size(); ++light) {
         // Coarse to fine, so that if the pool still runs out, the coarse pages stay.

@@ -115,20 +115,18 @@ private:
         /// casters moving meanwhile still invalidate).
         std::array<std::optional<PerspectiveGeometry>, kCubeFaces> faces{};
     };
-    /// A light's requests: level, face, page y, page x.
-    using PageSet = std::set<std::tuple<int, int, int, int>>;
     /// Fits `light`'s clipmap or faces and drops its pages when what they were drawn with changed.
     Light fitLight(const engine::FrameLight& light, const FitView& fit, std::span<const Aabb> boxes);
     /// Runs `mark` for `light` and reads back its request bits as pages; a clipmap's are clamped to its
     /// kClipmapLevels (which sets the geometry's finest level).
-    PageSet markPages(Light& light, const FitView& fit, int levelBase, glm::ivec2 size);
-    /// Over budget, the finest level of the light asking for the most pages gives way to its parents until
-    /// the pool holds every light's pages; returns how many requests merged.
-    int coarsenToFit(std::vector<PageSet>& requests) const;
+    PageRequests markPages(Light& light, const FitView& fit, int levelBase, glm::ivec2 size);
     void uploadPageTables();
-    /// Sizes the pool to what the budget leaves beside `tableLayers` page-table layers and the requests (at
-    /// least one page, warned), dropping every page.
-    void allocatePool(int tableLayers);
+    /// Sizes the pool to `wanted` tiles, at most what the budget leaves beside `tableLayers` page-table
+    /// layers and the requests (at least one page, warned). Beside the same layers it grows, the resident
+    /// pages copied to the new atlas; else it starts empty.
+    void allocatePool(int tableLayers, std::size_t wanted);
+    /// Tiles the budget holds beside `tableLayers` page-table layers, the requests and the blur's tile.
+    [[nodiscard]] std::size_t budgetTiles(int tableLayers) const;
     /// GPU bytes of the blur's temporary tile (none unless the plan blurs moments).
     [[nodiscard]] std::size_t blurTileBytes() const;
     void invalidateMovedCasters(const std::vector<Light>& lights,

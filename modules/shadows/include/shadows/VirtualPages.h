@@ -6,7 +6,9 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <set>
 #include <span>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -33,7 +35,8 @@ struct VirtualPageStats {
     int rendered = 0;
     /// Requested pages that were resident and valid already.
     int cached = 0;
-    /// Requests moved to a coarser level so that the frame's pages fit the pool.
+    /// Pages fewer the requests hold after moving to coarser levels so that the frame's pages fit the pool
+    /// (coarsenToFit).
     int coarsened = 0;
     /// Requests the pool could not hold even so: lookups there find no texels and are lit (warned).
     int refused = 0;
@@ -166,6 +169,21 @@ inline constexpr std::uint32_t kPageResidentBit = 0x80000000u;
 inline constexpr std::uint32_t kPageDrawnBit = 0x40000000u;
 inline constexpr std::uint32_t kPageTileMask = 0x00ffffffu;
 
+/// @brief One light's page requests in a frame: (level, face, page y, page x), so the finest level comes
+/// first. A clipmap's levels are absolute, a perspective map's its mip levels; face is 0 but for cube faces.
+using PageRequests = std::set<std::tuple<int, int, int, int>>;
+
+/// @brief Coarsens `requests` (one set per light; light i reads levels up to `coarsestLevels[i]`) until they
+/// hold at most `capacity` pages. The light asking for
+/// the most pages gives way first, one group of its finest level's pages that share a parent at a time: the
+/// group that frees the most pages for the pages it coarsens (its parent asked for already, then four
+/// children, three, two), so the pool ends as full as the requests allow and no more pixels than needed
+/// read coarser texels. Where no group of a level frees a page (lone children of parents nobody asked for),
+/// the level moves up whole. Stops when every light is at its coarsest level. Returns how many pages fewer
+/// the requests hold.
+int coarsenToFit(std::vector<PageRequests>& requests, std::span<const int> coarsestLevels,
+                 std::size_t capacity);
+
 /// @brief The physical pages: a fixed number of atlas tiles shared by every light, each holding one
 /// PageKey's texels, reused least recently used first. Pure bookkeeping; no GL.
 class PagePool {
@@ -188,6 +206,9 @@ public:
     /// frame; when none is left it is refused. Order requests coarse to fine so that over budget the coarse
     /// levels stay, and the fine ones fall back to them.
     FrameResult request(std::span<const PageKey> requests, std::uint64_t frame);
+    /// @brief Adds free tiles up to `tiles` in all (nothing when it holds as many already); resident pages
+    /// keep their tiles.
+    void grow(int tiles);
     /// @brief Drops every resident page of `light` (its direction or depth range changed).
     int invalidateLight(int light);
     /// @brief Drops the pages of `light` for which `stale(key)` holds; returns how many.
