@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [work folder, default out/results]
+# Usage: bash tools/results.sh [--only virtual] [work folder, default out/results]
+# --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads) and replaces only the
+# "Virtual maps" section of docs/RESULTS.md, which then says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+only=()
+if [ "${1:-}" = --only ]; then
+    [ "${2:-}" = virtual ] || { echo "results.sh: --only takes 'virtual'" >&2; exit 2; }
+    only=(--only virtual)
+    shift 2
+fi
 work=${1:-out/results}
 bash tools/setup.sh
 cmake --preset default >/dev/null
@@ -10,6 +18,21 @@ cmake --build --preset default --target gs-shadowbench gs-render gs-corpus gs-os
 bench=./build/bin/gs-shadowbench
 rm -rf "$work"
 
+peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<scene stem>/NAME
+    local scene=$1 name=$2 stem
+    stem=$(basename "${scene%.*}")
+    shift 2
+    xvfb-run -a -s "-screen 0 1280x1024x24" ./build/bin/gs-osgshadow --scene "$scene" "$@" \
+        --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$work/osg/$stem/$name"
+}
+peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults, named after it
+    local scene=$1 technique
+    shift
+    for technique in "$@"; do
+        peer_as "$scene" "$technique" --technique "$technique"
+    done
+}
+if [ ${#only[@]} -eq 0 ]; then # steps 1-10: the full run
 # 1. Trade-off sweep on the default scene: every technique, tap counts and map sizes.
 "$bench" --scene knob --taps 2,4,6 --resolutions 512,1024,2048 --frames 7 --out "$work/knob-sweep"
 
@@ -46,20 +69,6 @@ reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false,gra
 #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
 bash tools/corpus.sh
 corpus=(suzanne human-subdivided fzk-haus at-at jeep duck wuson epileptic dwarf cylinder-engine terrain)
-peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<scene stem>/NAME
-    local scene=$1 name=$2 stem
-    stem=$(basename "${scene%.*}")
-    shift 2
-    xvfb-run -a -s "-screen 0 1280x1024x24" ./build/bin/gs-osgshadow --scene "$scene" "$@" \
-        --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$work/osg/$stem/$name"
-}
-peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults, named after it
-    local scene=$1 technique
-    shift
-    for technique in "$@"; do
-        peer_as "$scene" "$technique" --technique "$technique"
-    done
-}
 for model in "${corpus[@]}"; do
     peer "corpus/$model.glb" vdsm sm lispsm ssm
 done
@@ -146,6 +155,14 @@ done
     --out "$work/cost-model"
 /usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
 
+else
+    # The peer rows step 11 reads: VDSM on its scenes the peer has (step 4 runs these among the others).
+    bash tools/corpus.sh
+    for model in suzanne fzk-haus cylinder-engine terrain; do
+        peer "corpus/$model.glb" vdsm
+    done
+fi
+
 # 11. Virtual maps: the default technique with whole fitted maps and with virtual maps, timed, with its pages cold
 #     and while the camera walks, on the large views, the knob and real models, osgShadow's VDSM beside it where
 #     the peer has the scene; then the apron under suns down to 3°, accuracy only.
@@ -164,5 +181,5 @@ done
     --config "virtual-msm:technique=msm,mapAllocation=virtual" --frames 5 --walk 30 --out "$work/virtual-lights"
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
-/usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results
+/usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results "${only[@]}"
 echo "wrote docs/RESULTS.md"
