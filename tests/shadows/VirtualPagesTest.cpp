@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace {
@@ -190,6 +191,18 @@ TEST(PagePool, GrowingKeepsResidentPagesInTheirTiles) {
     EXPECT_EQ(pool.tileOf(key(0, 0)), tile0);
 }
 
+TEST(PagePool, NeverEvictsAPageAskedForLaterInTheFrame) {
+    PagePool pool(2);
+    pool.request(std::vector{key(0, 0)}, 1);
+    pool.request(std::vector{key(0, 1)}, 2); // page 0 is the older
+    // A new page first, then page 0 again: the new one takes page 1's tile, not the older page 0's.
+    PagePool::FrameResult result = pool.request(std::vector{key(0, 2), key(0, 0)}, 3);
+    EXPECT_EQ(result.render.size(), 1u);
+    EXPECT_EQ(result.cached, 1);
+    EXPECT_GE(pool.tileOf(key(0, 0)), 0);
+    EXPECT_EQ(pool.tileOf(key(0, 1)), -1);
+}
+
 TEST(PagePool, RefusesWhatTheFramesOwnPagesFill) {
     PagePool pool(1);
     PagePool::FrameResult result = pool.request(std::vector{key(1, 0), key(0, 0)}, 1);
@@ -216,6 +229,20 @@ TEST(PagePool, InvalidatesOnlyPagesUnderTheRect) {
     EXPECT_EQ(pool.resident(), 1);
 }
 
+/// Lights reading up to `coarsest` levels each; no centre (a perspective map's requests, ranked by the pages
+/// each group frees) unless given, no previous frame.
+std::vector<shadows::CoarseningLight>
+lights(std::vector<int> coarsest, glm::dvec2 centre = glm::dvec2(std::numeric_limits<double>::quiet_NaN())) {
+    std::vector<shadows::CoarseningLight> result;
+    for (const int level : coarsest) {
+        shadows::CoarseningLight light;
+        light.coarsestLevel = level;
+        light.centre = centre;
+        result.push_back(light);
+    }
+    return result;
+}
+
 /// Level-0 requests of light 0 covering `side`² pages from the origin.
 shadows::PageRequests block(int side) {
     shadows::PageRequests pages;
@@ -230,8 +257,7 @@ shadows::PageRequests block(int side) {
 TEST(CoarsenToFit, FillsThePoolAsFullAsTheRequestsAllow) {
     // 64 pages into 50: five groups of four give way (15 pages fewer), not the whole level (16 left).
     std::vector requests{block(8)};
-    const std::vector coarsest{15};
-    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 50), 15);
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({15}), 50), 15);
     EXPECT_EQ(requests[0].size(), 49u);
     const auto coarser = std::count_if(requests[0].begin(), requests[0].end(),
                                        [](const auto& page) { return std::get<0>(page) == 1; });
@@ -243,16 +269,14 @@ TEST(CoarsenToFit, APageWhoseParentIsAskedForGivesWayFirst) {
     // page over, the lone page merges, and the group keeps its detail.
     std::vector requests{shadows::PageRequests{
         {0, 0, 0, 0}, {0, 0, 0, 1}, {0, 0, 1, 0}, {0, 0, 1, 1}, {0, 0, 4, 4}, {1, 0, 2, 2}}};
-    const std::vector coarsest{15};
-    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 5), 1);
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({15}), 5), 1);
     EXPECT_EQ(requests[0],
               (shadows::PageRequests{{0, 0, 0, 0}, {0, 0, 0, 1}, {0, 0, 1, 0}, {0, 0, 1, 1}, {1, 0, 2, 2}}));
 }
 
 TEST(CoarsenToFit, TheLightAskingForTheMostGivesWay) {
     std::vector requests{block(2), block(4)};
-    const std::vector coarsest{15, 15};
-    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 17), 3);
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({15, 15}), 17), 3);
     EXPECT_EQ(requests[0], block(2));
     EXPECT_EQ(requests[1].size(), 13u);
 }
@@ -260,17 +284,25 @@ TEST(CoarsenToFit, TheLightAskingForTheMostGivesWay) {
 TEST(CoarsenToFit, LonePagesMoveTheirLevelUpWhole) {
     // No group of level 0 frees a page, so the level moves up; on level 1 pairs merge.
     std::vector requests{shadows::PageRequests{{0, 0, 0, 0}, {0, 0, 0, 2}, {0, 0, 0, 4}, {0, 0, 0, 6}}};
-    const std::vector coarsest{15};
-    EXPECT_EQ(shadows::coarsenToFit(requests, coarsest, 2), 2);
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({15}), 2), 2);
     EXPECT_EQ(requests[0], (shadows::PageRequests{{2, 0, 0, 0}, {2, 0, 0, 1}}));
+}
+
+TEST(CoarsenToFit, AClipmapGivesWayFarthestFromTheCameraFirst) {
+    // The camera over level-0 page (2, 2): the group farthest from it, under parent (3, 3), merges.
+    std::vector requests{block(8)};
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({15}, {2.0, 2.0}), 61), 3);
+    EXPECT_TRUE(requests[0].contains({1, 0, 3, 3}));
+    EXPECT_FALSE(requests[0].contains({0, 0, 7, 7}));
+    EXPECT_TRUE(requests[0].contains({0, 0, 0, 0}));
 }
 
 TEST(CoarsenToFit, StopsAtEachLightsCoarsestLevel) {
     std::vector requests{block(4)};
-    EXPECT_EQ(shadows::coarsenToFit(requests, std::vector{0}, 1), 0);
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({0}), 1), 0);
     EXPECT_EQ(requests[0], block(4));
     // One level up at most: 16 pages become 4, over the capacity of 1 (the pool then refuses the rest).
-    EXPECT_EQ(shadows::coarsenToFit(requests, std::vector{1}, 1), 12);
+    EXPECT_EQ(shadows::coarsenToFit(requests, lights({1}), 1), 12);
     EXPECT_EQ(requests[0].size(), 4u);
 }
 

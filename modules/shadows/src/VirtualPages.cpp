@@ -232,10 +232,7 @@ void PagePool::release(int tile) {
 
 PagePool::FrameResult PagePool::request(std::span<const PageKey> requests, std::uint64_t frame) {
     FrameResult result;
-    // Tiles no request of this frame has touched yet, least recently used first: the eviction order.
-    std::vector<int> evictable;
-    std::size_t nextEvictable = 0;
-    bool evictableSorted = false;
+    // Every resident page asked for is touched first, so that no new page evicts one a later request needs.
     for (const PageKey& key : requests) {
         if (const auto found = residents_.find(key); found != residents_.end()) {
             Tile& record = tiles_[static_cast<std::size_t>(found->second)];
@@ -243,6 +240,14 @@ PagePool::FrameResult PagePool::request(std::span<const PageKey> requests, std::
                 record.lastUsed = frame;
                 ++result.cached;
             }
+        }
+    }
+    // Tiles no request of this frame has touched, least recently used first: the eviction order.
+    std::vector<int> evictable;
+    std::size_t nextEvictable = 0;
+    bool evictableSorted = false;
+    for (const PageKey& key : requests) {
+        if (residents_.contains(key)) {
             continue;
         }
         int tile = -1;
@@ -261,11 +266,6 @@ PagePool::FrameResult PagePool::request(std::span<const PageKey> requests, std::
                            tiles_[static_cast<std::size_t>(b)].lastUsed;
                 });
                 evictableSorted = true;
-            }
-            // Skip tiles touched since the list was made (a later request hit them).
-            while (nextEvictable < evictable.size() &&
-                   tiles_[static_cast<std::size_t>(evictable[nextEvictable])].lastUsed == frame) {
-                ++nextEvictable;
             }
             if (nextEvictable == evictable.size()) {
                 ++result.refused;
@@ -384,60 +384,111 @@ std::vector<std::uint32_t> buildPageTable(const PagePool& pool, int light, int f
     return table;
 }
 
-int coarsenToFit(std::vector<PageRequests>& requests, std::span<const int> coarsestLevels,
+int coarsenToFit(std::vector<PageRequests>& requests, std::span<const CoarseningLight> lights,
                  std::size_t capacity) {
     std::size_t count = 0;
     for (const PageRequests& pages : requests) {
         count += pages.size();
     }
     const std::size_t asked = count;
-    using Parent = std::tuple<int, int, int>; // face, parent page y, parent page x
-    while (count > capacity) {
-        std::optional<std::size_t> largest;
+    // The light asking for the most pages that still has a coarser level to give way to.
+    const auto largest = [&]() -> std::optional<std::size_t> {
+        std::optional<std::size_t> found;
         for (std::size_t light = 0; light < requests.size(); ++light) {
             const PageRequests& pages = requests[light];
-            if (!pages.empty() && std::get<0>(*pages.begin()) < coarsestLevels[light] &&
-                (!largest || pages.size() > requests[*largest].size())) {
-                largest = light;
+            if (!pages.empty() && std::get<0>(*pages.begin()) < lights[light].coarsestLevel &&
+                (!found || pages.size() > requests[*found].size())) {
+                found = light;
             }
         }
-        if (!largest) {
+        return found;
+    };
+    using Parent = std::tuple<int, int, int>; // face, parent page y, parent page x
+    while (count > capacity) {
+        const std::optional<std::size_t> light = largest();
+        if (!light) {
             break; // the coarsest levels alone exceed the capacity
         }
-        PageRequests& pages = requests[*largest];
+        PageRequests& pages = requests[*light];
         const int level = std::get<0>(*pages.begin());
         std::map<Parent, int> children;
         for (auto it = pages.begin(); it != pages.end() && std::get<0>(*it) == level; ++it) {
             const auto& [l, face, y, x] = *it;
             ++children[{face, y >> 1, x >> 1}];
         }
-        // Pages freed per page coarsened: 1 with the parent asked for already, else (n - 1) / n.
-        std::optional<Parent> best;
-        double bestRatio = 0.0;
+        // Among the groups that free a page: a clipmap's farthest from the camera first (its finest region
+        // then shrinks around the camera), else those freeing the most per page they coarsen (1 with the
+        // parent asked for already, else (n - 1) / n). A group whose pages are all drawn already goes last
+        // unless it is √2 times farther than the others: a walking camera's requests flicker at the levels'
+        // edges, and over a full pool each page that flickers back in would be drawn again. Ties in page
+        // order.
+        const CoarseningLight& hints = lights[*light];
+        const auto drawn = [&](const Parent& parent) {
+            const auto& [face, y, x] = parent;
+            bool any = false;
+            for (int child = 0; child < 4; ++child) {
+                const std::tuple key{level, face, 2 * y + (child >> 1), 2 * x + (child & 1)};
+                if (pages.contains(key)) {
+                    const PageKey page{hints.light, level, {std::get<3>(key), std::get<2>(key)}, face};
+                    if (!hints.pool || hints.pool->tileOf(page) < 0) {
+                        return false;
+                    }
+                    any = true;
+                }
+            }
+            return any;
+        };
+        struct Group {
+            bool frees = false;
+            bool drawn = false;
+            double distance = 0.0;
+            double ratio = 0.0;
+            Parent parent;
+        };
+        const glm::dvec2 centre = hints.centre * std::ldexp(1.0, -(level + 1));
+        const bool central = std::isfinite(centre.x) && std::isfinite(centre.y);
+        std::vector<Group> ranked;
         for (const auto& [parent, n] : children) {
             const auto& [face, y, x] = parent;
             const int freed = pages.contains({level + 1, face, y, x}) ? n : n - 1;
-            const double ratio = static_cast<double>(freed) / static_cast<double>(n);
-            if (ratio > bestRatio) {
-                best = parent;
-                bestRatio = ratio;
+            const bool isDrawn = drawn(parent);
+            const glm::dvec2 offset = glm::dvec2(x, y) + 0.5 - centre;
+            const double distance = central ? glm::dot(offset, offset) * (isDrawn ? 0.5 : 1.0) : 0.0;
+            ranked.push_back(
+                {freed > 0, isDrawn, distance, static_cast<double>(freed) / static_cast<double>(n), parent});
+        }
+        std::stable_sort(ranked.begin(), ranked.end(), [&](const Group& a, const Group& b) {
+            if (a.frees != b.frees) {
+                return a.frees;
+            }
+            if (central) {
+                return a.distance > b.distance;
+            }
+            return a.drawn != b.drawn ? b.drawn : a.ratio > b.ratio;
+        });
+        const auto merge = [&](const Parent& parent) {
+            const auto& [face, y, x] = parent;
+            for (int child = 0; child < 4; ++child) {
+                count -= pages.erase({level, face, 2 * y + (child >> 1), 2 * x + (child & 1)});
+            }
+            count += pages.insert({level + 1, face, y, x}).second ? 1 : 0;
+        };
+        if (!ranked.front().frees) {
+            // No group frees a page: the level moves up whole, and its parents may pair up there.
+            for (const Group& group : ranked) {
+                merge(group.parent);
+            }
+            continue;
+        }
+        for (const Group& group : ranked) {
+            if (count <= capacity || !group.frees) {
+                break;
+            }
+            merge(group.parent);
+            if (largest() != light) {
+                break; // another light asks for more now: it gives way next
             }
         }
-        PageRequests coarser;
-        std::size_t merged = 0;
-        for (auto it = pages.begin(); it != pages.end() && std::get<0>(*it) == level;) {
-            const auto& [l, face, y, x] = *it;
-            if (!best || *best == Parent{face, y >> 1, x >> 1}) {
-                coarser.insert({level + 1, face, y >> 1, x >> 1});
-                it = pages.erase(it);
-                ++merged;
-            } else {
-                ++it;
-            }
-        }
-        const std::size_t kept = pages.size();
-        pages.merge(coarser); // parents asked for already stay in `coarser`
-        count = count - merged + (pages.size() - kept);
     }
     return static_cast<int>(asked - count);
 }

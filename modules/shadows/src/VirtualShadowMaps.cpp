@@ -73,39 +73,42 @@ std::size_t VirtualShadowMaps::blurTileBytes() const {
                : 0;
 }
 
-std::size_t VirtualShadowMaps::budgetTiles(int tableLayers) const {
+VirtualShadowMaps::PoolLayout VirtualShadowMaps::poolLayout(int tableLayers) const {
     const std::size_t overhead = virtualOverheadBytes(pageSize_, tableLayers) + blurTileBytes();
     const std::size_t tileBytes = virtualTileBytes(plan_, pageSize_);
-    return budget_ > overhead ? (budget_ - overhead) / tileBytes : 0;
-}
-
-void VirtualShadowMaps::allocatePool(int tableLayers, std::size_t wanted) {
-    std::size_t affordable = budgetTiles(tableLayers);
-    if (affordable < 1) {
-        std::cerr << "shadows: virtualBudgetMiB " << (budget_ >> 20)
-                  << " holds no page beside the page tables of this frame's lights (" << tableLayers
-                  << " layers, " << virtualOverheadBytes(pageSize_, tableLayers) + blurTileBytes()
-                  << " bytes with the requests): one page is used, beyond the budget\n";
-        affordable = 1;
-    }
-    const std::size_t tiles = std::clamp<std::size_t>(wanted, 1, affordable);
+    // At least one page, beyond the budget if it must be (allocatePool warns).
+    const std::size_t affordable =
+        std::max<std::size_t>(budget_ > overhead ? (budget_ - overhead) / tileBytes : 0, 1);
     GLint maxSize = 0;
     GLint maxLayers = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
-    // Layers of a fixed size for the budget (up to 256 tiles, so a few hundred layers hold the largest
-    // budgets): the pool grows a layer at a time, and a tile lies at the same atlas texel whatever the pool's
+    // Layers of a fixed size for the budget (as few tiles as keep the layers to a few hundred: 4 in 64 MiB):
+    // the pool grows a layer at a time, and a tile lies at the same atlas texel whatever the pool's
     // size, so a grown pool reads exactly what a new one would.
-    const auto affordableRoot = static_cast<std::size_t>(std::sqrt(static_cast<double>(affordable)));
-    const auto perRow = std::min(
-        affordableRoot,
-        std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(std::sqrt(affordable / 256.0)))));
-    const int tilesPerRow = std::clamp(static_cast<int>(perRow), 1, std::max(maxSize / tile_, 1));
-    const auto perLayer = static_cast<std::size_t>(tilesPerRow) * static_cast<std::size_t>(tilesPerRow);
-    const std::size_t layers =
-        std::clamp<std::size_t>((tiles + perLayer - 1) / perLayer, 1,
-                                std::min(std::max<std::size_t>(affordable / perLayer, 1),
-                                         static_cast<std::size_t>(std::max(maxLayers, 1))));
+    const auto perRow = std::max<std::size_t>(
+        1, static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(affordable) / 256.0))));
+    PoolLayout layout;
+    layout.tilesPerRow = std::clamp(static_cast<int>(perRow), 1, std::max(maxSize / tile_, 1));
+    layout.tilesPerLayer =
+        static_cast<std::size_t>(layout.tilesPerRow) * static_cast<std::size_t>(layout.tilesPerRow);
+    layout.layers = std::min(std::max<std::size_t>(affordable / layout.tilesPerLayer, 1),
+                             static_cast<std::size_t>(std::max(maxLayers, 1)));
+    layout.fitsBudget = budget_ > overhead && (budget_ - overhead) / tileBytes >= 1;
+    return layout;
+}
+
+void VirtualShadowMaps::allocatePool(int tableLayers, std::size_t wanted) {
+    const PoolLayout layout = poolLayout(tableLayers);
+    if (!layout.fitsBudget) {
+        std::cerr << "shadows: virtualBudgetMiB " << (budget_ >> 20)
+                  << " holds no page beside the page tables of this frame's lights (" << tableLayers
+                  << " layers, " << virtualOverheadBytes(pageSize_, tableLayers) + blurTileBytes()
+                  << " bytes with the requests): one page is used, beyond the budget\n";
+    }
+    const int tilesPerRow = layout.tilesPerRow;
+    const std::size_t perLayer = layout.tilesPerLayer;
+    const std::size_t layers = std::clamp<std::size_t>((wanted + perLayer - 1) / perLayer, 1, layout.layers);
     ShadowPlan atlasPlan = plan_;
     atlasPlan.blursMoments = false; // blurred a tile at a time (blurMoments), not a whole layer
     auto atlas = std::make_unique<ShadowMapArray>(tilesPerRow * tile_, static_cast<int>(layers), atlasPlan);
@@ -431,18 +434,27 @@ VirtualShadowMaps::update(const FitView& fit, std::span<const engine::FrameLight
         stats_.requested += static_cast<int>(requested.back().size());
     }
     glUseProgram(0);
-    // The pool grows, by doubling, to what one frame asks for, up to the budget.
+    // A tenth of the pool stays free of this frame's pages: a walking camera's requests flicker at the
+    // levels' edges, and a page that flickers out is then still resident when it flickers back. The pool
+    // grows, by doubling, to hold what one frame asks for beside that tenth, up to the budget.
+    const auto usable = [](std::size_t tiles) { return tiles - tiles / 10; };
     const auto asked = static_cast<std::size_t>(std::max(stats_.requested, 1));
-    if (!atlas_ || (asked > static_cast<std::size_t>(pool_.tiles()) &&
-                    static_cast<std::size_t>(pool_.tiles()) < budgetTiles(layer))) {
-        allocatePool(layer, std::bit_ceil(asked));
+    const auto tiles = static_cast<std::size_t>(pool_.tiles());
+    if (!atlas_ || (asked > usable(tiles) && tiles < poolLayout(layer).tiles())) {
+        allocatePool(layer, std::bit_ceil(asked + asked / 9));
     }
-    std::vector<int> coarsestLevels;
+    std::vector<CoarseningLight> coarsening;
     for (const Light& light : lights_) {
-        coarsestLevels.push_back(light.faceCount == 0 ? light.geometry.finestLevel + kClipmapLevels - 1
-                                                      : light.levels() - 1);
+        CoarseningLight& hints = coarsening.emplace_back();
+        const bool clipmap = light.faceCount == 0;
+        hints.light = light.index;
+        hints.coarsestLevel = clipmap ? light.geometry.finestLevel + kClipmapLevels - 1 : light.levels() - 1;
+        if (clipmap) {
+            hints.centre = glm::dvec2(light.geometry.camera) / static_cast<double>(pageSize_);
+        }
+        hints.pool = &pool_;
     }
-    stats_.coarsened = coarsenToFit(requested, coarsestLevels, static_cast<std::size_t>(pool_.tiles()));
+    stats_.coarsened = coarsenToFit(requested, coarsening, usable(static_cast<std::size_t>(pool_.tiles())));
     std::vector<PageKey> requests;
     for (std::size_t light = 0; light < lights_.size(); ++light) {
         // Coarse to fine, so that if the pool still runs out, the coarse pages stay.

@@ -125,8 +125,18 @@ private:
     /// layers and the requests (at least one page, warned). Beside the same layers it grows, the resident
     /// pages copied to the new atlas; else it starts empty.
     void allocatePool(int tableLayers, std::size_t wanted);
-    /// Tiles the budget holds beside `tableLayers` page-table layers, the requests and the blur's tile.
-    [[nodiscard]] std::size_t budgetTiles(int tableLayers) const;
+    /// How the atlas is laid out beside `tableLayers` page-table layers: square layers of a fixed size, as
+    /// many as the budget holds beside the tables, the requests and the blur's tile (at least one tile).
+    struct PoolLayout {
+        int tilesPerRow = 1;
+        std::size_t tilesPerLayer = 1;
+        /// Layers at most.
+        std::size_t layers = 1;
+        /// Whether the budget holds even one tile beside the rest.
+        bool fitsBudget = true;
+        [[nodiscard]] std::size_t tiles() const { return tilesPerLayer * layers; }
+    };
+    [[nodiscard]] PoolLayout poolLayout(int tableLayers) const;
     /// GPU bytes of the blur's temporary tile (none unless the plan blurs moments).
     [[nodiscard]] std::size_t blurTileBytes() const;
     void invalidateMovedCasters(const std::vector<Light>& lights,

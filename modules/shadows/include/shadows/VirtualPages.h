@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <set>
 #include <span>
 #include <tuple>
@@ -173,15 +174,30 @@ inline constexpr std::uint32_t kPageTileMask = 0x00ffffffu;
 /// first. A clipmap's levels are absolute, a perspective map's its mip levels; face is 0 but for cube faces.
 using PageRequests = std::set<std::tuple<int, int, int, int>>;
 
-/// @brief Coarsens `requests` (one set per light; light i reads levels up to `coarsestLevels[i]`) until they
-/// hold at most `capacity` pages. The light asking for
-/// the most pages gives way first, one group of its finest level's pages that share a parent at a time: the
-/// group that frees the most pages for the pages it coarsens (its parent asked for already, then four
-/// children, three, two), so the pool ends as full as the requests allow and no more pixels than needed
-/// read coarser texels. Where no group of a level frees a page (lone children of parents nobody asked for),
-/// the level moves up whole. Stops when every light is at its coarsest level. Returns how many pages fewer
-/// the requests hold.
-int coarsenToFit(std::vector<PageRequests>& requests, std::span<const int> coarsestLevels,
+class PagePool;
+
+/// @brief What coarsenToFit knows of one light.
+struct CoarseningLight {
+    /// Engine light index (its pages' PageKey::light).
+    int light = 0;
+    /// The coarsest level its lookups read.
+    int coarsestLevel = 0;
+    /// A clipmap's camera, in pages of absolute level 0; NaN for a perspective map.
+    glm::dvec2 centre{std::numeric_limits<double>::quiet_NaN()};
+    /// The pool whose resident pages are drawn already (none: nothing is).
+    const PagePool* pool = nullptr;
+};
+
+/// @brief Coarsens `requests` (one set per light, described by `lights`) until they hold at most `capacity`
+/// pages. The light asking for the most pages gives way first, one group of its finest level's pages that
+/// share a parent at a time, among the groups that free a page: a clipmap's farthest from its camera first,
+/// so its finest region shrinks around the camera; a perspective map's those freeing the most per page they
+/// coarsen first (the parent asked for already, then four children, three, two). So the pool ends as full as
+/// the requests allow. Groups whose pages are all resident in the pool go last (a clipmap's unless √2 times
+/// farther than the others), so a walking camera keeps its drawn pages. Where no group of a level frees a
+/// page (lone children of parents nobody asked for), the level moves up whole. Stops when every light is at
+/// its coarsest level. Returns how many pages fewer the requests hold.
+int coarsenToFit(std::vector<PageRequests>& requests, std::span<const CoarseningLight> lights,
                  std::size_t capacity);
 
 /// @brief The physical pages: a fixed number of atlas tiles shared by every light, each holding one
