@@ -255,12 +255,22 @@ void RayTracedVisibility::edgeWithin(std::span<const glm::vec3> positions, std::
     }
 }
 
+float RayTracedVisibility::ownRadius(const engine::FrameLight& light) {
+    return light.light.type == engine::LightType::Directional ? 0.5f * light.light.angularDiameter
+                                                              : light.light.radius;
+}
+
+namespace {
+/// π (3 - √5): successive points of a Fibonacci lattice turn by it.
+constexpr double kGoldenAngle = 2.39996322972865332;
+} // namespace
+
 void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                                          std::span<const glm::vec3> normals,
                                          std::span<const std::uint8_t> covered,
                                          const engine::FrameLight& light, float radius, int samplesPerAxis,
                                          std::span<float> visibility) const {
-    const int samples = std::max(samplesPerAxis, 1);
+    const int samples = radius > 0.0f ? std::max(samplesPerAxis, 1) : 1;
     RayBatch batch;
     for (std::size_t i = 0; i < positions.size(); ++i) {
         visibility[i] = 0.0f;
@@ -271,32 +281,43 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
         glm::vec3 direction;
         float length = 0.0f;
         towardsLight(light, positions[i], direction, length);
+        const bool sun = std::isinf(length);
+        if (!sun && radius >= length) {
+            visibility[i] = 1.0f; // inside the light's sphere: nothing lies between
+            continue;
+        }
+        // The light seen from the point: a cone of half-angle `radius` (a sun's angular radius), or the one a
+        // sphere of `radius` subtends at distance `length`.
+        const double cosMax = sun ? std::cos(static_cast<double>(radius))
+                                  : std::sqrt(1.0 - static_cast<double>(radius) * radius /
+                                                        (static_cast<double>(length) * length));
         glm::vec3 u;
         glm::vec3 v;
         basisAround(direction, u, v);
-        for (int sy = 0; sy < samples; ++sy) {
-            for (int sx = 0; sx < samples; ++sx) {
-                glm::vec3 target = direction;
-                float segment = length;
-                if (radius > 0.0f && samples > 1) {
-                    // Stratified point on the unit disk (concentric strata: cell centres mapped by sqrt for
-                    // area).
-                    const float s = (static_cast<float>(sx) + 0.5f) / static_cast<float>(samples);
-                    const float t = (static_cast<float>(sy) + 0.5f) / static_cast<float>(samples);
-                    const float r = std::sqrt(s);
-                    const float angle = glm::two_pi<float>() * t;
-                    const glm::vec2 disk(r * std::cos(angle), r * std::sin(angle));
-                    if (std::isinf(length)) {
-                        target = glm::normalize(direction + radius * (disk.x * u + disk.y * v));
-                    } else {
-                        const glm::vec3 point =
-                            positions[i] + direction * length + radius * (disk.x * u + disk.y * v);
-                        segment = glm::length(point - positions[i]);
-                        target = (point - positions[i]) / segment;
-                    }
+        const int rays = samples * samples;
+        for (int k = 0; k < rays; ++k) {
+            glm::vec3 target = direction;
+            float segment = length;
+            if (rays > 1) {
+                // A Fibonacci lattice over the cone, uniform in solid angle: ray k alone in the k-th of
+                // `rays` rings of equal solid angle (cos θ evenly spaced from 1 to cos θmax), turned by the
+                // golden angle from the one before. Every straight shadow edge across the light then cuts the
+                // rays in proportion to the part it hides far more evenly than a grid of strata does (error
+                // about 1/rays rather than 1/samples).
+                const double cosine = 1.0 - (k + 0.5) / rays * (1.0 - cosMax);
+                const double sine = std::sqrt(std::max(0.0, 1.0 - cosine * cosine));
+                const double angle = k * kGoldenAngle;
+                target = glm::normalize(
+                    glm::vec3(cosine * glm::dvec3(direction) +
+                              sine * (std::cos(angle) * glm::dvec3(u) + std::sin(angle) * glm::dvec3(v))));
+                if (!sun) {
+                    // To the sphere's near surface along the ray: d cos α - sqrt(r² - d² sin² α).
+                    const double d = length;
+                    const double inside = static_cast<double>(radius) * radius - d * d * sine * sine;
+                    segment = static_cast<float>(d * cosine - std::sqrt(std::max(0.0, inside)));
                 }
-                batch.add(origin, target, segment, i);
             }
+            batch.add(origin, target, segment, i);
         }
     }
     std::vector<float> free(batch.origins.size());

@@ -167,8 +167,24 @@ BenchScene::BenchScene(std::string name, engine::Scene scene, engine::EntityId c
     }
     truth_.resize(positions.size());
     if (options.softSamplesPerAxis > 0) {
-        tracer.softVisibility(positions_, normals_, covered, light_, options.softRadius,
-                              options.softSamplesPerAxis, truth_);
+        softTruth_.samplesPerAxis = options.softSamplesPerAxis;
+        softTruth_.radius = options.softRadius.value_or(RayTracedVisibility::ownRadius(light_));
+        tracer.softVisibility(positions_, normals_, covered, light_, softTruth_.radius,
+                              softTruth_.samplesPerAxis, truth_);
+        // Converged where four times the rays change it little: the RMS difference over the receivers.
+        std::vector<float> finer(truth_.size());
+        tracer.softVisibility(positions_, normals_, covered, light_, softTruth_.radius,
+                              2 * softTruth_.samplesPerAxis, finer);
+        double sum = 0.0;
+        std::size_t receivers = 0;
+        for (std::size_t i = 0; i < truth_.size(); ++i) {
+            if (surfaces_[i] == Surface::Receiver) {
+                const double difference = static_cast<double>(finer[i]) - truth_[i];
+                sum += difference * difference;
+                ++receivers;
+            }
+        }
+        softTruth_.convergenceRmse = receivers > 0 ? std::sqrt(sum / static_cast<double>(receivers)) : 0.0;
     } else {
         tracer.hardVisibility(positions_, normals_, covered, light_, truth_);
     }
@@ -235,6 +251,7 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
 
     const Accuracy accuracy = measure(scene, config.settings);
     result.metrics = accuracy.metrics;
+    result.soft = accuracy.soft;
     engine::writePng(folder / (config.label + "-classes.png"),
                      classificationImage(options_.size, accuracy.classes, accuracy.visibility));
     engine::writePng(folder / (config.label + "-error.png"),
@@ -406,12 +423,16 @@ Accuracy ShadowBench::measureVisibility(const BenchScene& scene, std::vector<flo
     accuracy.metrics = computeMetrics(accuracy.classes, scene.truth_, accuracy.visibility, scene.concave_);
     accuracy.metrics.edges =
         edgePlacement(options_.size, accuracy.classes, scene.truth_, accuracy.visibility);
+    if (scene.softTruth_.samplesPerAxis > 0) {
+        accuracy.soft = softShadowMetrics(options_.size, accuracy.classes, scene.truth_, accuracy.visibility);
+    }
     return accuracy;
 }
 
 SceneCost ShadowBench::measureCost(const BenchScene& scene) const {
     SceneCost cost;
     cost.scene = scene.name();
+    cost.softTruth = scene.softTruth();
     engine::Engine engine;
     engine::RenderTarget target(options_.size);
     const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, target);
@@ -509,6 +530,7 @@ BenchResult ShadowBench::peerResult(const BenchScene& scene, const PeerRun& run,
     }
     const Accuracy accuracy = measureVisibility(scene, std::move(visibility), std::move(texelSizes));
     result.metrics = accuracy.metrics;
+    result.soft = accuracy.soft;
     const std::filesystem::path folder = options_.imageFolder / scene.name();
     engine::writePng(folder / (result.config.label + "-classes.png"),
                      classificationImage(options_.size, accuracy.classes, accuracy.visibility));
@@ -694,6 +716,18 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"concaveDarkening", m.concaveDarkening},
              {"mae", m.meanAbsoluteError},
              {"rmse", m.rootMeanSquareError},
+             {"soft", !r.soft ? nlohmann::json()
+                              : nlohmann::json({{"penumbraPixels", r.soft->penumbraPixels},
+                                                {"penumbraRmse", r.soft->penumbraRmse},
+                                                {"penumbraMae", r.soft->penumbraMae},
+                                                {"umbraPixels", r.soft->umbraPixels},
+                                                {"falseLit", r.soft->falseLit},
+                                                {"litPixels", r.soft->litPixels},
+                                                {"falseShadow", r.soft->falseShadow},
+                                                {"widthSamples", r.soft->widthSamples},
+                                                {"widthMissing", r.soft->widthMissing},
+                                                {"widthErrorMedian", r.soft->widthErrorMedian},
+                                                {"widthErrorP95", r.soft->widthErrorP95}})},
              {"pixels",
               {{"receivers", m.receivers},
                {"lit", m.lit},
@@ -770,6 +804,11 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"filteredFetchMs",
               c.filteredFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.filteredFetchMs)},
              {"compareFetchMs", c.compareFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.compareFetchMs)},
+             {"softTruth", c.softTruth.samplesPerAxis == 0
+                               ? nlohmann::json()
+                               : nlohmann::json({{"samplesPerAxis", c.softTruth.samplesPerAxis},
+                                                 {"radius", c.softTruth.radius},
+                                                 {"convergenceRmse", c.softTruth.convergenceRmse}})},
              {"peerUnshadowedFrameMs", c.peerUnshadowedFrame.median < 0.0
                                            ? nlohmann::json()
                                            : nlohmann::json({{"median", c.peerUnshadowedFrame.median},

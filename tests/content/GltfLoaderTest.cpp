@@ -344,9 +344,17 @@ TEST_P(GltfRoundTripTest, PreservesGeometryHierarchyCamerasAndLights) {
     scene.entity(sun).light = engine::LightComponent{};
     scene.entity(sun).light->intensity = 3.0f;
     scene.entity(sun).light->castsShadows = false;
+    scene.entity(sun).light->angularDiameter = 0.02f;
     const auto spot = scene.create("spot");
-    scene.entity(spot).light =
-        engine::LightComponent{engine::LightType::Spot, {1, 0.5f, 0.25f}, 7.0f, true, 20.0f, 0.2f, 0.4f};
+    scene.entity(spot).light = engine::LightComponent{engine::LightType::Spot,
+                                                      {1, 0.5f, 0.25f},
+                                                      7.0f,
+                                                      true,
+                                                      20.0f,
+                                                      0.2f,
+                                                      0.4f,
+                                                      engine::LightComponent::kSunAngularDiameter,
+                                                      0.3f};
     const auto bulb = scene.create("bulb");
     engine::LightComponent point;
     point.type = engine::LightType::Point;
@@ -386,12 +394,14 @@ TEST_P(GltfRoundTripTest, PreservesGeometryHierarchyCamerasAndLights) {
     ASSERT_TRUE(loaded.scene.entity(sun).light);
     EXPECT_EQ(loaded.scene.entity(sun).light->type, engine::LightType::Directional);
     EXPECT_FALSE(loaded.scene.entity(sun).light->castsShadows);
+    EXPECT_FLOAT_EQ(loaded.scene.entity(sun).light->angularDiameter, 0.02f);
     const auto& spotLight = *loaded.scene.entity(spot).light;
     EXPECT_EQ(spotLight.type, engine::LightType::Spot);
     EXPECT_FLOAT_EQ(spotLight.intensity, 7.0f);
     EXPECT_FLOAT_EQ(spotLight.range, 20.0f);
     EXPECT_FLOAT_EQ(spotLight.outerConeAngle, 0.4f);
     EXPECT_EQ(spotLight.color, glm::vec3(1, 0.5f, 0.25f));
+    EXPECT_FLOAT_EQ(spotLight.radius, 0.3f);
     const auto& bulbLight = *loaded.scene.entity(bulb).light;
     EXPECT_EQ(bulbLight.type, engine::LightType::Point);
     EXPECT_FLOAT_EQ(bulbLight.intensity, 12.0f);
@@ -925,6 +935,28 @@ INSTANTIATE_TEST_SUITE_P(
                      R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","range":1e300}]}})",
                      "light 0: extensions.KHR_lights_punctual.lights[0].range must be a finite number > 0 "
                      "(leave it out for an unlimited range), not 1e+300"},
+        // A light's size (extras, for soft shadows): the sun's angular diameter, a local light's radius.
+        BadValueCase{"negativeRadius", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","name":"bulb",)"
+                     R"("extras":{"radius":-0.1}}]}})",
+                     "light 0 ('bulb') extras.radius must be a number in [0, 3.40282e+38), not -0.1"},
+        BadValueCase{"radiusNotANumber", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot","spot":{},)"
+                     R"("extras":{"radius":"big"}}]}})",
+                     "light 0 extras.radius must be a number in [0, 3.40282e+38), not a non-number"},
+        BadValueCase{"radiusBeyondTheRange", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","range":2,)"
+                     R"("extras":{"radius":5}}]}})",
+                     "light 0 extras.radius must be a number in [0, 2) (the light's range), not 5"},
+        BadValueCase{"hugeAngularDiameter", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional",)"
+                     R"("extras":{"angularDiameter":2}}]}})",
+                     "light 0 extras.angularDiameter must be a number in [0, 1.5708) radians, not 2"},
+        BadValueCase{"radiusOfASun", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
+                     R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional",)"
+                     R"("extras":{"radius":1}}]}})",
+                     "light 0 extras.radius is for spot and point lights; a directional light's size is "
+                     "extras.angularDiameter"},
         BadValueCase{
             "spotRangeZero", R"(,"extensions":{"KHR_lights_punctual":{"light":0}})",
             R"(,"extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot","name":"cone",)"

@@ -224,6 +224,99 @@ TEST(GroundTruthTest, SoftVisibilityIsTheUnblockedFractionOfTheDisk) {
     EXPECT_EQ(visibility[2], 1.0f); // beyond the blocker's edge at x = -2
 }
 
+/// The fraction of a uniform disk of unit radius beyond a chord at signed distance `a` from its centre: the
+/// part of a small light a half-plane edge leaves visible (the circular segment's area over the disk's).
+double diskBeyondChord(double a) {
+    a = std::clamp(a, -1.0, 1.0);
+    return 1.0 - (std::acos(-a) - (-a) * std::sqrt(1.0 - a * a)) / glm::pi<double>();
+}
+
+/// A blocker over x < 0 at height 1 (a plane from x = -2 to 0).
+engine::Scene halfPlaneBlocker() {
+    engine::Scene scene;
+    const auto wall = scene.create("half-plane");
+    auto mesh = std::make_shared<engine::MeshData>(engine::primitives::plane(2.0f, 1));
+    scene.entity(wall).mesh = engine::MeshComponent{mesh};
+    scene.entity(wall).transform.translation = {-1.0f, 1.0f, 0.0f};
+    return scene;
+}
+
+// A sun is a cone of its angular radius seen from each point: under a half-plane's edge the visible part is
+// the disk's segment beyond the edge's chord, as the closed form has it.
+TEST(GroundTruthTest, SoftVisibilityOfASunIsTheVisiblePartOfItsCone) {
+    const RayTracedVisibility tracer(halfPlaneBlocker());
+    const float radius = 0.05f; // angular radius: the disk spans tan(0.05) at height 1
+    std::vector<glm::vec3> positions;
+    for (const float x : {-0.04f, -0.02f, 0.0f, 0.02f, 0.04f}) {
+        positions.push_back({x, 0.0f, 0.0f});
+    }
+    const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
+    const std::vector<std::uint8_t> covered(positions.size(), 1);
+    std::vector<float> visibility(positions.size());
+    tracer.softVisibility(positions, normals, covered, sun({0, -1, 0}), radius, 16, visibility);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const double expected = diskBeyondChord(-positions[i].x / std::tan(static_cast<double>(radius)));
+        EXPECT_NEAR(visibility[i], expected, 0.02) << "at x = " << positions[i].x;
+    }
+}
+
+// A point or spot light of radius r at distance d fills the cone of half-angle asin(r / d).
+TEST(GroundTruthTest, SoftVisibilityOfASphereLightIsTheVisiblePartOfItsCone) {
+    const RayTracedVisibility tracer(halfPlaneBlocker());
+    engine::FrameLight bulb;
+    bulb.light.type = engine::LightType::Point;
+    bulb.light.radius = 0.3f;
+    bulb.position = {0.0f, 3.0f, 0.0f};
+    const double tangent = std::tan(std::asin(0.3 / 3.0)); // the cone's radius at the blocker, height 1
+    std::vector<glm::vec3> positions;
+    for (const float x : {-0.08f, 0.0f, 0.05f}) {
+        positions.push_back({x, 0.0f, 0.0f});
+    }
+    const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
+    const std::vector<std::uint8_t> covered(positions.size(), 1);
+    std::vector<float> visibility(positions.size());
+    tracer.softVisibility(positions, normals, covered, bulb, RayTracedVisibility::ownRadius(bulb), 16,
+                          visibility);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        // The cone's axis leans with the point's offset; its chord sits where the line to the centre crosses
+        // the blocker's height, x (2/3) of the way.
+        const double chord = -positions[i].x * (2.0 / 3.0);
+        EXPECT_NEAR(visibility[i], diskBeyondChord(chord / tangent), 0.03) << "at x = " << positions[i].x;
+    }
+    // A radius of 0, and a point inside the light's sphere.
+    EXPECT_EQ(RayTracedVisibility::ownRadius(sun({0, -1, 0})),
+              0.5f * engine::LightComponent::kSunAngularDiameter);
+    bulb.light.radius = 3.5f;
+    tracer.softVisibility(positions, normals, covered, bulb, 3.5f, 4, visibility);
+    EXPECT_EQ(visibility[0], 1.0f);
+}
+
+// Stratified rays converge: twice as many per axis change the visibility of a penumbra little.
+TEST(GroundTruthTest, SoftVisibilityConvergesWithMoreRays) {
+    const RayTracedVisibility tracer(halfPlaneBlocker());
+    std::vector<glm::vec3> positions;
+    for (int i = 0; i < 41; ++i) {
+        positions.push_back({-0.06f + 0.003f * static_cast<float>(i), 0.0f, 0.3f});
+    }
+    const std::vector<glm::vec3> normals(positions.size(), glm::vec3(0, 1, 0));
+    const std::vector<std::uint8_t> covered(positions.size(), 1);
+    const auto rms = [&](int coarse) {
+        std::vector<float> a(positions.size());
+        std::vector<float> b(positions.size());
+        tracer.softVisibility(positions, normals, covered, sun({0, -1, 0}), 0.05f, coarse, a);
+        tracer.softVisibility(positions, normals, covered, sun({0, -1, 0}), 0.05f, 2 * coarse, b);
+        double sum = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            sum += (a[i] - b[i]) * static_cast<double>(a[i] - b[i]);
+        }
+        return std::sqrt(sum / static_cast<double>(a.size()));
+    };
+    const double coarse = rms(4);
+    const double fine = rms(16);
+    EXPECT_LT(fine, 0.005); // every point in the penumbra: no shadowless points dilute it
+    EXPECT_LT(fine, coarse);
+}
+
 TEST(GroundTruthTest, EdgeWithinFindsTheOtherSideOfTheShadowsEdgeAcrossTheRays) {
     // Under an overhead sun a unit ball 2 above the ground shadows a unit disk: its edge lies 1 from the
     // point under the centre and 0.2 from a point 0.8 out, measured across the rays; the same from a lit

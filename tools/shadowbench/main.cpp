@@ -54,7 +54,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --band WIDTH[UNIT]    boundary band half-width around true shadow edges, not scored for acne and
                         leak; UNIT px (screen pixels, what a viewer sees) or texels (shadow-map
                         texels at each receiver)                            [2px]
-  --soft N:RADIUS       soft ground truth, N x N rays per pixel over a disk light of RADIUS
+  --soft N[:RADIUS]     soft ground truth, N x N stratified rays per pixel over the light's own size (a sun's
+                        angular diameter, a local light's sphere; glTF extras), or a sun's angular RADIUS in
+                        radians, a local light's RADIUS; reports its RMS difference from 2N x 2N rays
   --out DIR             where results.csv, results.json and images go       [bench]: per scene
                         <label>.png (shaded), <label>-classes.png, <label>-error.png, truth.png (the
                         truth's classes) and side-by-side.png
@@ -203,11 +205,10 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--soft") {
             const std::string text = value();
             const auto colon = text.find(':');
-            if (colon == std::string::npos) {
-                usageError("--soft: '" + text + "' is not SAMPLES:RADIUS");
-            }
             options.bench.softSamplesPerAxis = cli::integerIn("--soft", text.substr(0, colon), 1, 32);
-            options.bench.softRadius = cli::numberIn("--soft", text.substr(colon + 1), 0.0f, 100.0f);
+            if (colon != std::string::npos) {
+                options.bench.softRadius = cli::numberIn("--soft", text.substr(colon + 1), 0.0f, 100.0f);
+            }
         } else if (arg == "--out") {
             options.bench.imageFolder = value();
         } else if (arg == "--content") {
@@ -308,6 +309,20 @@ std::string pagesText(const shadowbench::BenchResult& result) {
     return text.str();
 }
 
+/// A result's penumbra errors against a soft truth for the progress line; empty against a hard one.
+std::string softText(const shadowbench::BenchResult& result) {
+    if (!result.soft) {
+        return {};
+    }
+    const shadowbench::SoftShadowMetrics& soft = *result.soft;
+    std::ostringstream text;
+    text << std::setprecision(3) << "penumbra RMSE " << soft.penumbraRmse << " over " << soft.penumbraPixels
+         << " px, false lit " << soft.falseLit << ", false shadow " << soft.falseShadow << ", width error "
+         << soft.widthErrorMedian << "/" << soft.widthErrorP95 << " px (median/p95 of " << soft.widthSamples
+         << "), ";
+    return text.str();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -360,6 +375,7 @@ int main(int argc, char** argv) {
                           << m.edges.trueToRendered.percentile95 << "/" << m.edges.renderedToTrue.percentile95
                           << "), m<=1 " << m.density.atMostOnePixel << " (p99 " << m.density.percentile99
                           << " px, p99.9 " << m.density.percentile999 << "), " << pagesText(results.back())
+                          << softText(results.back())
                           << (results.back().shimmer >= 0.0
                                   ? "shimmer " + std::to_string(results.back().shimmer) + ", "
                                   : std::string())
@@ -412,6 +428,12 @@ int main(int argc, char** argv) {
             if (cost.filteredFetchMs >= 0.0) {
                 std::cout << ", lighting pass " << cost.unshadowedLighting.median << " ms, one fetch "
                           << cost.filteredFetchMs << " ms bilinear, " << cost.compareFetchMs << " ms compare";
+            }
+            if (const shadowbench::SoftTruth& soft = cost.softTruth; soft.samplesPerAxis > 0) {
+                std::cout << std::defaultfloat << "; soft truth " << soft.samplesPerAxis << "x"
+                          << soft.samplesPerAxis << " rays over radius " << soft.radius << ", RMS "
+                          << soft.convergenceRmse << " from " << 2 * soft.samplesPerAxis << "x"
+                          << 2 * soft.samplesPerAxis;
             }
             std::cout << std::defaultfloat << "\n";
             costs.push_back(cost);

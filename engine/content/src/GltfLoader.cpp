@@ -501,6 +501,7 @@ private:
                      value.str());
             }
         }
+        readLightSize(source, label, light);
         if (source.extras.IsObject() && source.extras.Has("castsShadows")) {
             const tinygltf::Value& castsShadows = source.extras.Get("castsShadows");
             if (!castsShadows.IsBool()) {
@@ -509,6 +510,45 @@ private:
             light.castsShadows = castsShadows.Get<bool>();
         }
         result_.scene.entity(entity).light = light;
+    }
+
+    /// The light's size from its extras (KHR_lights_punctual has none): `angularDiameter` (radians, a
+    /// directional light's disk) or `radius` (world units, a spot or point light's sphere), for soft shadows.
+    void readLightSize(const tinygltf::Light& source, const std::string& label,
+                       engine::LightComponent& light) {
+        if (!source.extras.IsObject()) {
+            return;
+        }
+        const bool directional = light.type == engine::LightType::Directional;
+        const char* const field = directional ? "angularDiameter" : "radius";
+        const char* const other = directional ? "radius" : "angularDiameter";
+        if (source.extras.Has(other)) {
+            fail(label + " extras." + other + " is for " + (directional ? "spot and point" : "directional") +
+                 " lights; a " + engine::toString(light.type) + " light's size is extras." + field);
+        }
+        if (!source.extras.Has(field)) {
+            return;
+        }
+        const tinygltf::Value& value = source.extras.Get(field);
+        const double size = value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
+        const double largest = directional          ? engine::LightComponent::kMaxAngularDiameter
+                               : light.range > 0.0f ? static_cast<double>(light.range)
+                                                    : static_cast<double>(std::numeric_limits<float>::max());
+        if (!std::isfinite(size) || size < 0.0 || size >= largest) {
+            std::ostringstream text;
+            text << label << " extras." << field << " must be a number in [0, " << largest << ")"
+                 << (directional          ? " radians"
+                     : light.range > 0.0f ? " (the light's range)"
+                                          : "")
+                 << ", not ";
+            if (value.IsNumber()) {
+                text << size;
+            } else {
+                text << "a non-number";
+            }
+            fail(text.str());
+        }
+        (directional ? light.angularDiameter : light.radius) = static_cast<float>(size);
     }
 
     /// Copies accessor `index`, after checking that all its elements lie inside its bufferView and buffer.

@@ -191,8 +191,19 @@ private:
         if (source.type != engine::LightType::Directional) {
             light.range = source.range;
         }
+        tinygltf::Value::Object extras;
         if (!source.castsShadows) {
-            light.extras = tinygltf::Value(tinygltf::Value::Object{{"castsShadows", tinygltf::Value(false)}});
+            extras["castsShadows"] = tinygltf::Value(false);
+        }
+        // The size where it is not the default (GltfLoader reads it back).
+        if (source.type == engine::LightType::Directional &&
+            source.angularDiameter != engine::LightComponent::kSunAngularDiameter) {
+            extras["angularDiameter"] = tinygltf::Value(static_cast<double>(source.angularDiameter));
+        } else if (source.type != engine::LightType::Directional && source.radius != 0.0f) {
+            extras["radius"] = tinygltf::Value(static_cast<double>(source.radius));
+        }
+        if (!extras.empty()) {
+            light.extras = tinygltf::Value(std::move(extras));
         }
         model_.lights.push_back(light);
         return static_cast<int>(model_.lights.size() - 1);

@@ -44,6 +44,18 @@ struct LightComponent {
     float innerConeAngle = 0.4f;
     /// Spot only: half-angle in radians where the light reaches zero. Default 0.5 rad (~29°).
     float outerConeAngle = 0.5f;
+    /// Directional only: the angular diameter of the light's disk, radians, for soft shadows. Default the
+    /// sun's, 0.53° (0.00925 rad); 0 is a point at infinity.
+    float angularDiameter = kSunAngularDiameter;
+    /// Spot and point only: the radius of the light's sphere, world units, for soft shadows. Default 0, a
+    /// point.
+    float radius = 0.0f;
+
+    /// @brief The sun's mean angular diameter seen from the Earth, 0.53°, in radians.
+    static constexpr float kSunAngularDiameter = 0.53f * 3.14159265358979f / 180.0f;
+    /// @brief Largest angular diameter a directional light may have, radians: a disk wider than a hemisphere
+    /// is no longer a direction.
+    static constexpr float kMaxAngularDiameter = 3.14159265358979f / 2.0f;
 };
 
 enum class ProjectionType { Perspective, Orthographic };

@@ -35,12 +35,18 @@ public:
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light,
                         std::span<float> visibility) const;
 
-    /// @brief Soft visibility of an area light: the fraction of `samplesPerAxis`² stratified rays that reach
-    /// a disk of `radius` facing the surface (directional lights: `radius` is the sun's angular radius in
-    /// radians; spot and point lights: its physical radius in world units).
+    /// @brief Soft visibility of an area light: the fraction of `samplesPerAxis`² rays, stratified and
+    /// uniform in solid angle over the cone the light fills seen from the point, that reach it. A sun is a
+    /// cone of half-angle `radius` (its angular radius, radians); a spot or point light a sphere of `radius`
+    /// (world units), each ray ending at its near surface; a point inside the sphere is lit. A radius of 0
+    /// is hardVisibility.
     void softVisibility(std::span<const glm::vec3> positions, std::span<const glm::vec3> normals,
                         std::span<const std::uint8_t> covered, const engine::FrameLight& light, float radius,
                         int samplesPerAxis, std::span<float> visibility) const;
+
+    /// @brief The radius softVisibility takes for `light`'s own size: half its angular diameter for a sun,
+    /// its radius for a spot or point light.
+    [[nodiscard]] static float ownRadius(const engine::FrameLight& light);
 
     /// @brief Whether the edge of the shadow lies near each point with `reach[i] > 0`, across the light's
     /// rays: 1 where one of 16 points, `reach[i]` or half of it from the point (offset off the surface as in

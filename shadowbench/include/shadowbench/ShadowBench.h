@@ -2,6 +2,7 @@
 
 #include <shadowbench/RayTracedVisibility.h>
 #include <shadowbench/ShadowMetrics.h>
+#include <shadowbench/SoftShadowMetrics.h>
 
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
@@ -42,6 +43,8 @@ struct BenchResult {
     std::string scene;
     BenchConfig config;
     ShadowMetrics metrics;
+    /// Against a soft ground truth (BenchOptions::softSamplesPerAxis): the penumbra's errors.
+    std::optional<SoftShadowMetrics> soft;
     PassTiming shadowPass;
     PassTiming lightingPass;
     /// Whole frames (glFinish + steady clock around Engine::renderFrame), as an application would see them.
@@ -79,6 +82,17 @@ struct BenchResult {
     engine::Image shaded;
 };
 
+/// @brief How a soft ground truth was traced, and how far it is from converged.
+struct SoftTruth {
+    /// Stratified rays per axis (0: the truth is hard).
+    int samplesPerAxis = 0;
+    /// The light's radius it sampled (RayTracedVisibility::softVisibility).
+    float radius = 0.0f;
+    /// RMS difference over the receivers between the truth and one traced with twice the rays per axis
+    /// (four times the rays); its noise is at most 0.5/sqrt(rays).
+    double convergenceRmse = -1.0;
+};
+
 /// @brief What drawing a scene costs without shadows: its size, our draw calls and unshadowed frame time.
 struct SceneCost {
     std::string scene;
@@ -98,11 +112,15 @@ struct SceneCost {
     PassTiming unshadowedLighting{-1.0, -1.0, -1.0};
     double filteredFetchMs = -1.0;
     double compareFetchMs = -1.0;
+    /// The scene's ground truth, where it is soft.
+    SoftTruth softTruth;
 };
 
 /// @brief One technique's visibility against ground truth over one view.
 struct Accuracy {
     ShadowMetrics metrics;
+    /// Against a soft ground truth: the penumbra's errors.
+    std::optional<SoftShadowMetrics> soft;
     std::vector<PixelClass> classes;
     std::vector<float> visibility;
     std::vector<float> truth;
@@ -136,8 +154,10 @@ struct BenchOptions {
     BandUnit bandUnit = BandUnit::Pixels;
     /// Soft ground truth: stratified samples per axis (0 = hard ground truth). Default 0.
     int softSamplesPerAxis = 0;
-    /// Soft ground truth: light radius (sun: angular radius in radians; spot: world units). Default 0.01.
-    float softRadius = 0.01f;
+    /// Soft ground truth: the light's radius (a sun's angular radius in radians; a spot or point light's
+    /// sphere, world units), or nullopt for the light's own size (RayTracedVisibility::ownRadius). Default
+    /// nullopt.
+    std::optional<float> softRadius;
     /// Frames of the shimmer measurement (measureShimmer); 0 does not measure it. Default 0.
     int shimmerFrames = 0;
     /// Frames of the camera path of the path shimmer measurement (measurePathShimmer); 0 does not measure it.
@@ -161,6 +181,8 @@ public:
     ~BenchScene();
 
     [[nodiscard]] const std::string& name() const { return name_; }
+    /// @brief How its ground truth was traced (samplesPerAxis 0: hard).
+    [[nodiscard]] const SoftTruth& softTruth() const { return softTruth_; }
 
 private:
     friend class ShadowBench;
@@ -173,6 +195,7 @@ private:
     std::vector<Surface> surfaces_;
     std::vector<std::uint8_t> concave_;
     std::vector<float> truth_;
+    SoftTruth softTruth_;
     /// World size of one pixel at each covered pixel, across the view ray: a pixel band's reach off the
     /// image.
     std::vector<float> pixelSizes_;

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <shadowbench/ShadowMetrics.h>
+
+#include <glm/glm.hpp>
+
+#include <span>
+
+namespace shadowbench {
+
+/// @brief Errors of a soft shadow against a soft ground truth (see softShadowMetrics).
+struct SoftShadowMetrics {
+    /// Receivers in the penumbra mask: 0.02 < truth < 0.98, dilated by kPenumbraDilation pixels.
+    std::size_t penumbraPixels = 0;
+    double penumbraRmse = 0.0;
+    double penumbraMae = 0.0;
+    /// Receivers in the umbra (truth <= 0.02) outside the mask, and those of them rendered lit (> 0.5).
+    std::size_t umbraPixels = 0;
+    std::size_t falseLit = 0;
+    /// Receivers wholly lit (truth >= 0.98) outside the mask, and those of them rendered shadowed (< 0.5).
+    std::size_t litPixels = 0;
+    std::size_t falseShadow = 0;
+    /// Penumbra width: at each sample of the truth's 0.5 iso-line whose true penumbra is at least the
+    /// minimum wide, the rendered width along the same line against the true one, |rendered - true| pixels.
+    std::size_t widthSamples = 0;
+    /// Samples whose rendered profile has no 0.1 to 0.9 crossing near the true edge (counted apart).
+    std::size_t widthMissing = 0;
+    double widthErrorMedian = 0.0;
+    double widthErrorP95 = 0.0;
+};
+
+/// @brief Pixels the penumbra mask is dilated by.
+inline constexpr float kPenumbraDilation = 2.0f;
+
+/// @brief The width in pixels between the `low` and `high` iso-lines of `visibility` through `from` along the
+/// unit `direction` (towards the lit side): from the 0.5 crossing nearest `from` within `reach` pixels, down
+/// to where it falls to `low` and up to where it rises to `high`, bilinearly over receivers (`classes` other
+/// than Ignored; a profile leaving them ends there). Negative when a crossing is not found within `reach`.
+float penumbraWidth(glm::ivec2 size, std::span<const PixelClass> classes, std::span<const float> visibility,
+                    glm::vec2 from, glm::vec2 direction, float reach, float low = 0.1f, float high = 0.9f);
+
+/// @brief The soft-shadow errors of `visibility` against the soft `truth` over the receivers of `classes`:
+/// RMSE and MAE over the penumbra mask, false-lit umbra and false-shadow lit pixels outside it, and the
+/// penumbra-width error at the truth's edge samples whose true width is at least `minimumWidth` pixels.
+SoftShadowMetrics softShadowMetrics(glm::ivec2 size, std::span<const PixelClass> classes,
+                                    std::span<const float> truth, std::span<const float> visibility,
+                                    float minimumWidth = 4.0f);
+
+} // namespace shadowbench
