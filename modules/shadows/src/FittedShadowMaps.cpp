@@ -4,8 +4,6 @@
 
 #include <engine/ForwardRenderer.h>
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <array>
 #include <iostream>
 
@@ -159,22 +157,8 @@ void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Prog
         const LightProjection& projection = slots[layer].projection;
         framebuffer.bind();
         glViewport(0, 0, settings_.resolution, settings_.resolution);
-        glClearDepth(1.0);
-        if (maps_->gradient) {
-            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
-        } else if (maps_->moments) {
-            glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
-        }
-        glClear(GL_DEPTH_BUFFER_BIT);
-        const glm::mat4 lightViewProjection = projection.projection * projection.view;
-        program.set("uLightViewProjection", lightViewProjection);
-        program.set("uDepthRange", projection.depthRange);
-        // Culled to the map's own clip volume: casters outside it could not write a texel.
-        host_.drawMeshes(scene, lightViewProjection, [&](engine::EntityId, const glm::mat4& model) {
-            program.set("uModel", model);
-            return true;
-        });
+        clearMapTargets(*maps_, framebuffer.id(), plan_);
+        drawCasters(host_, scene, program, projection);
     }
 }
 

@@ -1,6 +1,7 @@
 #include "MapAllocator.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 namespace shadows {
 
@@ -16,6 +17,28 @@ std::int32_t drawnKind(const LightMapsBlock& maps, LightMapsKind drawn) {
     const bool any = glm::any(glm::greaterThanEqual(maps.slots, glm::ivec4(0))) ||
                      glm::any(glm::greaterThanEqual(maps.faceSlots, glm::ivec4(0)));
     return static_cast<std::int32_t>(any ? drawn : LightMapsKind::None);
+}
+
+void clearMapTargets(const ShadowMapArray& maps, GLuint framebuffer, const ShadowPlan& plan) {
+    if (maps.gradient) {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, zero);
+    } else if (maps.moments) {
+        glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(plan.momentsClear));
+    }
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
+                 const LightProjection& projection) {
+    const glm::mat4 viewProjection = projection.projection * projection.view;
+    program.set("uLightViewProjection", viewProjection);
+    program.set("uDepthRange", projection.depthRange);
+    host.drawMeshes(scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
+        program.set("uModel", model);
+        return true;
+    });
 }
 
 } // namespace shadows

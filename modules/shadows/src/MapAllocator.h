@@ -4,6 +4,7 @@
 #include "ShadowMapArray.h"
 
 #include <shadows/LightFrustum.h>
+#include <shadows/ShadowPlan.h>
 #include <shadows/VirtualPages.h>
 
 #include <engine/Module.h>
@@ -82,5 +83,14 @@ int addSlot(std::vector<MapSlot>& slots, int lightIndex, const LightProjection& 
 /// @brief `drawn` when any slot of `maps` holds a map this frame, else None (the lighting pass reads
 /// nothing).
 std::int32_t drawnKind(const LightMapsBlock& maps, LightMapsKind drawn);
+
+/// @brief Clears what `framebuffer` (one of `maps`' layers, bound, within its viewport and scissor) draws
+/// into: the depth to the far plane, a gradient to zero, moments to the plan's far-plane value.
+void clearMapTargets(const ShadowMapArray& maps, GLuint framebuffer, const ShadowPlan& plan);
+
+/// @brief Draws the casters of `scene` seen through `projection` with `program` (the shadow pass's, in use),
+/// culled to its clip volume: casters outside it could not write a texel.
+void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
+                 const LightProjection& projection);
 
 } // namespace shadows

@@ -666,27 +666,12 @@ void VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Pro
         const glm::ivec2 cell(tile % tilesPerRow_, (tile % perLayer) / tilesPerRow_);
         glViewport(cell.x * tile_, cell.y * tile_, tile_, tile_);
         glScissor(cell.x * tile_, cell.y * tile_, tile_, tile_);
-        const GLuint framebuffer = atlas_->framebuffers[static_cast<std::size_t>(layer)].id();
-        if (atlas_->gradient) {
-            const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-            glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, zero);
-        } else if (atlas_->moments) {
-            glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(plan_.momentsClear));
-        }
-        glClearDepth(1.0);
-        glClear(GL_DEPTH_BUFFER_BIT);
+        clearMapTargets(*atlas_, atlas_->framebuffers[static_cast<std::size_t>(layer)].id(), plan_);
         const Light& light = *byIndex.at(key.light);
-        const LightProjection projection =
-            light.faceCount == 0 ? light.geometry.pageProjection(key.level, key.page, border_)
-                                 : light.faces[static_cast<std::size_t>(key.face)].pageProjection(
-                                       key.level, key.page, border_);
-        const glm::mat4 viewProjection = projection.projection * projection.view;
-        program.set("uLightViewProjection", viewProjection);
-        program.set("uDepthRange", projection.depthRange);
-        host_.drawMeshes(scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
-            program.set("uModel", model);
-            return true;
-        });
+        drawCasters(host_, scene, program,
+                    light.faceCount == 0 ? light.geometry.pageProjection(key.level, key.page, border_)
+                                         : light.faces[static_cast<std::size_t>(key.face)].pageProjection(
+                                               key.level, key.page, border_));
     }
     glDisable(GL_SCISSOR_TEST);
 }
