@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only virtual] [work folder, default out/results]
-# --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads) and replaces only the
-# "Virtual maps" section of docs/RESULTS.md, which then says so.
+# Usage: bash tools/results.sh [--only virtual|soft] [work folder, default out/results]
+# --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads), --only soft step 12, and
+# replaces only that step's section of docs/RESULTS.md ("Virtual maps", "Soft shadows"), which then says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
-    [ "${2:-}" = virtual ] || { echo "results.sh: --only takes 'virtual'" >&2; exit 2; }
-    only=(--only virtual)
+    case "${2:-}" in
+        virtual | soft) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'virtual' or 'soft'" >&2; exit 2 ;;
+    esac
     shift 2
 fi
 work=${1:-out/results}
@@ -155,7 +157,7 @@ done
     --out "$work/cost-model"
 /usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
 
-else
+elif [ "${only[1]}" = virtual ]; then
     # The peer rows step 11 reads: VDSM on its scenes the peer has (step 4 runs these among the others).
     bash tools/corpus.sh
     for model in suzanne fzk-haus cylinder-engine terrain; do
@@ -163,6 +165,7 @@ else
     done
 fi
 
+if [ "${only[1]:-virtual}" = virtual ]; then
 # 11. Virtual maps: the default technique with whole fitted maps and with virtual maps, timed, with its pages cold
 #     and while the camera walks, on the large views, the knob and real models, osgShadow's VDSM beside it where
 #     the peer has the scene; then the apron under suns down to 3°, accuracy only.
@@ -179,6 +182,14 @@ fi
 #     room's 960 MiB of fitted moment faces), fitted and virtual.
 "$bench" --scene room --scene spheres --techniques default,msm --resolutions 2048 --config "virtual:mapAllocation=virtual" \
     --config "virtual-msm:technique=msm,mapAllocation=virtual" --frames 5 --walk 30 --out "$work/virtual-lights"
+fi
+
+if [ "${only[1]:-soft}" = soft ]; then
+# 12. Soft shadows: the default and the filtered techniques against the ray-traced truth of each light's own size
+#     (8² rays a pixel, and its distance from 16²), on the soft-shadow scenes, the room and the outdoor scene.
+"$bench" --scene soft-contact --scene soft-overlap --scene soft-fence --scene room --scene outdoor \
+    --techniques default,pcf,gsm,evsm --resolutions 2048 --soft 8 --accuracy-only --out "$work/soft"
+fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
 /usr/bin/python3 tools/shadowbench/results.py "$work" docs/RESULTS.md docs/results "${only[@]}"

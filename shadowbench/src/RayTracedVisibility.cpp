@@ -271,7 +271,19 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
                                          const engine::FrameLight& light, float radius, int samplesPerAxis,
                                          std::span<float> visibility) const {
     const int samples = radius > 0.0f ? std::max(samplesPerAxis, 1) : 1;
+    const float weight = 1.0f / static_cast<float>(samples * samples);
+    // Cast a batch at a time: a 640x480 view at 32² rays per pixel would hold 300 M rays at once.
+    constexpr std::size_t kBatchRays = std::size_t{1} << 20;
     RayBatch batch;
+    std::vector<float> free;
+    const auto cast = [&] {
+        free.resize(batch.origins.size());
+        castShadowRays(batch.origins, batch.directions, batch.lengths, free);
+        for (std::size_t ray = 0; ray < free.size(); ++ray) {
+            visibility[batch.pixelOf[ray]] += free[ray] * weight;
+        }
+        batch = {};
+    };
     for (std::size_t i = 0; i < positions.size(); ++i) {
         visibility[i] = 0.0f;
         if (!covered[i]) {
@@ -319,13 +331,11 @@ void RayTracedVisibility::softVisibility(std::span<const glm::vec3> positions,
             }
             batch.add(origin, target, segment, i);
         }
+        if (batch.origins.size() >= kBatchRays) {
+            cast();
+        }
     }
-    std::vector<float> free(batch.origins.size());
-    castShadowRays(batch.origins, batch.directions, batch.lengths, free);
-    const float weight = 1.0f / static_cast<float>(samples * samples);
-    for (std::size_t ray = 0; ray < free.size(); ++ray) {
-        visibility[batch.pixelOf[ray]] += free[ray] * weight;
-    }
+    cast();
 }
 
 } // namespace shadowbench

@@ -182,6 +182,41 @@ const std::vector<SceneRecipe>& sceneRecipes() {
              b.spot({3.0f, 7.0f, 2.0f}, {0.0f, 0.0f, 0.0f}, 60.0f, 0.75f);
              b.camera({0.0f, 6.0f, 8.0f}, {0.0f, 0.0f, 0.0f});
          }},
+        // Soft shadows (a light's size, extras.angularDiameter): a wall standing on the ground under a sun 4°
+        // wide, whose shadow is sharp where it touches the ground and widens away from it.
+        {"soft-contact",
+         [](SceneBuilder& b) {
+             b.ground(14.0f);
+             b.box("wall", {0.0f, 1.0f, 0.0f}, {0.15f, 2.0f, 1.6f}, {0.75f, 0.55f, 0.4f});
+             const engine::EntityId sun = b.sun(90.0f, 35.0f);
+             b.scene().entity(sun).light->angularDiameter = glm::radians(4.0f);
+             b.camera({1.5f, 3.2f, 4.2f}, {-1.6f, 0.0f, 0.0f});
+         }},
+        // Two plates at different heights whose penumbrae overlap: one average blocker depth is wrong there
+        // (PCSS's known weakness).
+        {"soft-overlap",
+         [](SceneBuilder& b) {
+             b.ground(12.0f);
+             b.box("high plate", {0.35f, 1.9f, 0.0f}, {1.2f, 0.05f, 1.2f}, {0.4f, 0.55f, 0.8f});
+             b.box("low plate", {-0.35f, 0.5f, 0.25f}, {1.0f, 0.05f, 1.0f}, {0.8f, 0.45f, 0.35f});
+             const engine::EntityId sun = b.sun(30.0f, 70.0f);
+             b.scene().entity(sun).light->angularDiameter = glm::radians(5.0f);
+             b.camera({0.0f, 4.2f, 4.0f}, {-0.1f, 0.1f, -0.3f});
+         }},
+        // A fence of thin slats under the real sun (0.53°, the default) 7° above the horizon: long thin
+        // shadows whose penumbrae widen from their feet to several times the slats' width.
+        {"soft-fence",
+         [](SceneBuilder& b) {
+             b.ground(30.0f);
+             for (int slat = 0; slat < 12; ++slat) {
+                 b.box("slat " + std::to_string(slat),
+                       {-1.32f + 0.24f * static_cast<float>(slat), 0.5f, 0.0f}, {0.05f, 1.0f, 0.03f},
+                       {0.6f, 0.5f, 0.35f});
+             }
+             b.box("rail", {0.0f, 0.8f, 0.04f}, {3.0f, 0.06f, 0.04f}, {0.6f, 0.5f, 0.35f});
+             b.sun(10.0f, 7.0f);
+             b.camera({2.8f, 2.6f, 2.4f}, {-0.4f, 0.0f, -2.6f});
+         }},
         // A furnished room lit by two overlapping point lights: omnidirectional lights inside a closed box.
         {"room", contentgen::buildRoom},
         // Kilometres of rolling ground with objects from posts to towers, seen from eye height: a view from

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Writes docs/RESULTS.md and its plots from the results.json files of tools/results.sh's shadowbench runs.
 
-usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only virtual]
+usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only virtual|soft]
 
-With --only virtual, only step 11's sections ("Virtual maps" up to the next "## " section) are regenerated from
-WORK_FOLDER and replace theirs in RESULTS_MD, which says so; every other section stays as the last full run wrote it.
+With --only virtual (soft), only step 11's (12's) section, "Virtual maps" ("Soft shadows") up to the next "## "
+section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says so; every other section
+stays as the last full run wrote it.
 """
 import itertools
 import json
@@ -21,9 +22,9 @@ from default_rule import edges_scored, map_mib, meets_floor, recommend, scored  
 import cost_model  # noqa: E402
 
 work, results_md, plot_folder = (pathlib.Path(a) for a in sys.argv[1:4])
-if sys.argv[4:] not in ([], ["--only", "virtual"]):
+if sys.argv[4:] not in ([], ["--only", "virtual"], ["--only", "soft"]):
     sys.exit(f"results.py: unknown options {' '.join(sys.argv[4:])} (usage: see its docstring)")
-partial = sys.argv[4:] == ["--only", "virtual"]
+partial = sys.argv[5] if len(sys.argv) > 5 else None
 plot_folder.mkdir(parents=True, exist_ok=True)
 
 
@@ -820,23 +821,69 @@ def virtual_texels_section(texels):
     out.append("\n".join(lines) + "\n")
 
 
-def splice_virtual(sections, renderer):
-    """RESULTS_MD with its "Virtual maps" section, up to the next "## " heading, replaced by `sections`."""
+def soft_section(soft):
+    """Techniques against the ray-traced truth of each light's own size: penumbra errors and the truth's convergence."""
+    out.append("## Soft shadows\n")
+    truths = {c["scene"]: c.get("softTruth") for c in soft["scenes"]}
+    out.append("Every light has a size (a sun's `angularDiameter`, a spot or point light's `radius`, in the glTF light's "
+               "`extras`: docs/CONTENT.md), and the truth here is that light's: each receiver's visibility is the "
+               "fraction of rays, uniform in solid angle over the cone the light fills seen from it, that reach it "
+               "(docs/SHADOWS.md, \"How a view is scored\"). The scenes: `soft-contact`, a wall standing on the ground "
+               "under a sun 4° wide (the shadow hardens where it touches the ground); `soft-overlap`, two plates at "
+               "heights 0.5 and 1.9 under a sun 5° wide, whose penumbrae overlap; `soft-fence`, slats under the real "
+               "sun (0.53°) 7° above the horizon; `room`, the first of its two point lights, bulbs 8 cm across; "
+               f"`outdoor`, 4 km under the real sun with cascades. {soft['width']}x{soft['height']}, accuracy only. "
+               "Penumbra: RMSE over the mask 0.02 < truth < 0.98 dilated by 2 px; false lit: umbra pixels (truth ≤ "
+               "0.02, outside the mask) rendered above 0.5; false shadow: lit ones (truth ≥ 0.98) rendered below; "
+               "width: the distance between the 0.1 and 0.9 iso-lines along the truth's gradient at its 0.5 "
+               "iso-line, rendered against true where the true one is at least 4 px wide, median / 95th percentile "
+               "of the difference in pixels (samples). No technique of the module is soft yet: these rows are the "
+               "hard and fixed-kernel techniques' errors, what a shadow that widens with distance from its caster "
+               "must improve on.\n")
+    lines = ["| scene | truth: rays, RMS from 4× the rays | configuration | penumbra RMSE / MAE | false lit / umbra px "
+             "| false shadow / lit px | width error median / p95 px (samples) |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
+    for r in soft["results"]:
+        q = r.get("soft")
+        if not q:
+            continue
+        t = truths.get(r["scene"]) or {}
+        truth = (f"{t['samplesPerAxis']}², {t['convergenceRmse']:.4f}" if t else "–")
+        lines.append(f"| {r['scene']} | {truth} | {r['label']} | {q['penumbraRmse']:.3f} / {q['penumbraMae']:.3f} | "
+                     f"{q['falseLit']} / {q['umbraPixels']} | {q['falseShadow']} / {q['litPixels']} | "
+                     f"{q['widthErrorMedian']:.1f} / {q['widthErrorP95']:.1f} ({q['widthSamples']}) |")
+    out.append("\n".join(lines) + "\n")
+
+
+PARTIAL_SECTIONS = {"virtual": "## Virtual maps", "soft": "## Soft shadows"}
+
+
+def splice(heading, sections, renderer, option):
+    """RESULTS_MD with its `heading` section, up to the next "## " heading, replaced by `sections` (inserted before
+    "## Cost model", or at the end, where it has none yet)."""
     previous = results_md.read_text().rstrip("\n").split("\n")
-    begin = previous.index("## Virtual maps")
-    end = next((i for i in range(begin + 1, len(previous)) if previous[i].startswith("## ")), len(previous))
-    note = (f"Regenerated alone by `bash tools/results.sh --only virtual` ({renderer}); the other sections are from "
-            "the last full run of `bash tools/results.sh`.\n")
+    if heading in previous:
+        begin = previous.index(heading)
+        end = next((i for i in range(begin + 1, len(previous)) if previous[i].startswith("## ")), len(previous))
+    else:
+        begin = end = previous.index("## Cost model") if "## Cost model" in previous else len(previous)
+    note = (f"Regenerated alone by `bash tools/results.sh --only {option}` ({renderer}); the other sections are "
+            "from the last full run of `bash tools/results.sh`.\n")
     fresh = "\n".join([sections[0], note] + sections[1:]).split("\n")
     return "\n".join(previous[:begin] + fresh + previous[end:]) + "\n"
 
 
-if partial:
+if partial == "virtual":
     timed = load("virtual")
     virtual_section(timed, load("virtual-suns"))
     virtual_texels_section(load("virtual-texels"))
     virtual_lights_section(load("virtual-lights"))
-    results_md.write_text(splice_virtual(out, timed["renderer"]))
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, timed["renderer"], partial))
+    sys.exit(0)
+if partial == "soft":
+    soft = load("soft")
+    soft_section(soft)
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, soft["renderer"], partial))
     sys.exit(0)
 
 reference_sections()
@@ -854,6 +901,8 @@ if (work / "virtual" / "results.json").exists():
     virtual_texels_section(load("virtual-texels"))
     if (work / "virtual-lights" / "results.json").exists():
         virtual_lights_section(load("virtual-lights"))
+if (work / "soft" / "results.json").exists():
+    soft_section(load("soft"))
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))
