@@ -206,6 +206,7 @@ SoftShadowMetrics softShadowMetrics(glm::ivec2 size, std::span<const PixelClass>
                 continue;
             }
             errors.push_back(std::abs(static_cast<double>(renderedWidth) - trueWidth));
+            metrics.widths.emplace_back(trueWidth, renderedWidth);
         }
     }
     metrics.widthSamples = errors.size();

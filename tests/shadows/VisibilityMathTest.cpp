@@ -602,3 +602,47 @@ TEST(TexelFootprintMathTest, SingularOrInvalidDerivativesAreUnbounded) {
     EXPECT_EQ(g::gsTexelFootprintPixels(glm::vec2(inf, 0.0f), glm::vec2(0.0f, 1.0f)),
               g::GS_FOOTPRINT_UNBOUNDED);
 }
+
+TEST(PcssMathTest, PenumbraRadiusFollowsSimilarTriangles) {
+    const float unlimited = 1e30f;
+    // A sun of angular radius θ: (receiver - blocker) tan θ.
+    const float tangent = std::tan(0.02f);
+    EXPECT_NEAR(g::gsPcssRadius(5.0f, 3.0f, tangent, false, unlimited), 2.0f * tangent, 1e-7f);
+    // A sphere of radius 0.1 two units from the blocker, one unit past it: 0.1 (3 - 2) / 2.
+    EXPECT_NEAR(g::gsPcssRadius(3.0f, 2.0f, 0.1f, true, unlimited), 0.05f, 1e-7f);
+    // The search: the blocker at the map's nearest distance bounds every penumbra the receiver can have.
+    EXPECT_GT(g::gsPcssRadius(3.0f, 0.5f, 0.1f, true, unlimited),
+              g::gsPcssRadius(3.0f, 2.0f, 0.1f, true, unlimited));
+    EXPECT_EQ(g::gsPcssRadius(3.0f, 0.5f, 0.1f, true, 0.25f), 0.25f);
+}
+
+TEST(PcssMathTest, AZeroSizeLightOrNoBlockerInFrontGivesNoPenumbra) {
+    EXPECT_EQ(g::gsPcssRadius(5.0f, 3.0f, 0.0f, false, 1e30f), 0.0f);
+    EXPECT_EQ(g::gsPcssRadius(5.0f, 3.0f, 0.0f, true, 1e30f), 0.0f);
+    EXPECT_EQ(g::gsPcssRadius(3.0f, 3.0f, 0.1f, true, 1e30f), 0.0f);
+    EXPECT_EQ(g::gsPcssRadius(3.0f, 4.0f, 0.1f, false, 1e30f), 0.0f);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(g::gsPcssRadius(nan, 1.0f, 0.1f, true, 1e30f), 0.0f);
+    EXPECT_EQ(g::gsPcssRadius(3.0f, 1.0f, nan, true, 1e30f), 0.0f);
+    // A blocker at the light itself (distance 0) stays finite, at the limit.
+    EXPECT_EQ(g::gsPcssRadius(3.0f, 0.0f, 0.1f, true, 8.0f), 8.0f);
+}
+
+TEST(PcssMathTest, VogelTapsFillTheUnitDiskEvenly) {
+    constexpr int kCount = 24;
+    glm::vec2 mean(0.0f);
+    int inner = 0;
+    for (int i = 0; i < kCount; ++i) {
+        const glm::vec2 tap = g::gsVogelTap(i, kCount, 0.7f);
+        EXPECT_LE(glm::length(tap), 1.0f);
+        mean += tap / float(kCount);
+        inner += glm::length(tap) < std::sqrt(0.5f);
+    }
+    EXPECT_LT(glm::length(mean), 0.1f); // no side favoured
+    EXPECT_EQ(inner, kCount / 2);       // half the taps in the inner half of the area
+    // Turning the disk turns every tap.
+    const glm::vec2 a = g::gsVogelTap(5, kCount, 0.0f);
+    const glm::vec2 b = g::gsVogelTap(5, kCount, 1.0f);
+    EXPECT_NEAR(glm::length(a), glm::length(b), 1e-6f);
+    EXPECT_NEAR(std::atan2(b.y, b.x) - std::atan2(a.y, a.x), 1.0f, 1e-5f);
+}

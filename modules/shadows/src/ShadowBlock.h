@@ -49,7 +49,8 @@ struct alignas(16) ShadowBlock {
     /// x resolution, y 1/resolution, z texel scale, w 1 for perspective maps.
     glm::vec4 texel[kMaxMaps];
     /// xy: near and far of a perspective map, zero for orthographic ones; z: the lit border in texels
-    /// (LightProjection::litBorderTexels).
+    /// (LightProjection::litBorderTexels); w: the light's size (a sun's tan of its angular radius, a local
+    /// light's radius).
     glm::vec4 depthRange[kMaxMaps];
     LightMapsBlock lights[engine::ForwardRenderer::kMaxLights];
     /// The fit camera's view depth of a world point is dot(viewDepth, (p, 1)).

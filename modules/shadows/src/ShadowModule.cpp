@@ -195,7 +195,7 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame) {
         return;
     }
     layoutKey_ = layoutKey(lights);
-    uploadBlock(lights, fit);
+    uploadBlock(lights, fit, frame.lights);
 }
 
 engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBlock>& lights) const {
@@ -333,7 +333,8 @@ void ShadowModule::bindLightingResources(const engine::gl::Program& program, con
     }
 }
 
-void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit) {
+void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit,
+                               std::span<const engine::FrameLight> frameLights) {
     ShadowBlock block{};
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         block.worldToShadow[slot] = glm::mat4(1.0f);
@@ -344,7 +345,17 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
-        block.depthRange[slot] = glm::vec4(projection.depthRange, projection.litBorderTexels, 0.0f);
+        // The light's size as the soft techniques take it: a sun's by the tangent of its angular radius (the
+        // penumbra's half-width per unit of distance behind its blocker), a local light's by its radius.
+        float size = 0.0f;
+        for (const engine::FrameLight& light : frameLights) {
+            if (light.index == slots_[slot].lightIndex) {
+                size = light.light.type == engine::LightType::Directional
+                           ? std::tan(0.5f * light.light.angularDiameter)
+                           : light.light.radius;
+            }
+        }
+        block.depthRange[slot] = glm::vec4(projection.depthRange, projection.litBorderTexels, size);
     }
     std::copy(lights.begin(), lights.end(), block.lights);
     // View depth is -z in view space: minus the view matrix's third row.

@@ -134,6 +134,7 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     plan.needsJitterTexture = plan.traits->jittered;
     // Two texels cover a bilinear footprint and central differences around any tap.
     plan.kernelReachTexels = 2.0f +
+                             (plan.traits->softReachTexels ? plan.traits->softReachTexels(settings) : 0.0f) +
                              (plan.usesTapPattern || plan.traits->jittered ? settings.pcfRadius : 0.0f) +
                              (plan.momentsFormat != 0 ? static_cast<float>(settings.momentBlurRadius) : 0.0f);
     return plan;

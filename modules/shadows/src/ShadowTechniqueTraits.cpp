@@ -252,9 +252,31 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reliefLiftTexels = kReliefLift,
      .biasesDepth = true,
      .fuzzyComparison = true},
+    {.technique = T::Pcss,
+     .name = "pcss",
+     .summary =
+         "percentage-closer soft shadows: 16 blocker-search taps then 24 filter taps (each a bilinear 2×2 "
+         "of comparisons) on Vogel disks turned per pixel by interleaved gradient noise, every tap "
+         "compared at the receiver's tangent plane; the search and the penumbra from the light's own size "
+         "(a sun's angular diameter, a local light's radius) in world units, converted per map, cascade "
+         "and page, up to 64 texels (16 on virtual pages); no blocker found: lit, every tap a blocker: "
+         "shadowed; a light of "
+         "size 0: one comparison",
+     .reference = "Fernando, SIGGRAPH 2005 sketch",
+     .sampler = Sampler::DepthLinear,
+     .defines = {"GS_SHADOW_PCSS", "GS_SHADOW_TANGENT_PLANE"},
+     .shaderParameters =
+         [](const ShadowSettings& s) { return glm::vec4(softReachTexels(s), 0.0f, 0.0f, 0.0f); },
+     .footprintTexels = bilinearReach,
+     .biasesDepth = true,
+     .softReachTexels = softReachTexels},
 }};
 
 } // namespace
+
+float softReachTexels(const ShadowSettings& settings) {
+    return settings.mapAllocation == MapAllocation::Virtual ? 16.0f : 64.0f;
+}
 
 std::span<const ShadowTechniqueTraits> techniqueTable() {
     return kTable;

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <span>
+#include <vector>
 
 namespace shadowbench {
 
@@ -27,6 +28,8 @@ struct SoftShadowMetrics {
     std::size_t widthMissing = 0;
     double widthErrorMedian = 0.0;
     double widthErrorP95 = 0.0;
+    /// Each measured sample's true and rendered width, pixels.
+    std::vector<glm::vec2> widths;
 };
 
 /// @brief Pixels the penumbra mask is dilated by.

@@ -104,8 +104,10 @@ private:
     void fitMaps(const engine::FrameContext& frame);
     /// Blurs the moments (ShadowPlan::blursMoments).
     void blurMoments();
-    /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and the settings' scalars.
-    void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit);
+    /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and size (of
+    /// `frameLights`) and the settings' scalars.
+    void uploadBlock(const std::vector<LightMapsBlock>& lights, const FitView& fit,
+                     std::span<const engine::FrameLight> frameLights);
     [[nodiscard]] engine::ShaderVariantKey variantKey(const std::vector<std::string_view>& defines) const;
     /// The variant bits of the map layouts (LightMapsKind) `lights` use, which the lighting pass compiles
     /// alone, GS_SHADOW_ONE_MAP where the frame has one map, and GS_SHADOW_ORTHOGRAPHIC where every map is

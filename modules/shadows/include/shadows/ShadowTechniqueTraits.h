@@ -32,10 +32,11 @@ enum class ShadowTechnique {
     AdaptiveBias, ///< one comparison at the receiver's tangent plane's depth at the texel centre
     PcfAdaptiveBias, ///< the same for every PCF tap
     PcfGsmConnected, ///< PCF over GSM, taps continuing the receiver's surface without a jump count as lit
+    Pcss,            ///< percentage-closer soft shadows: blocker search, penumbra from the light's size, PCF
 };
 
 /// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::PcfGsmConnected) + 1;
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::Pcss) + 1;
 
 /// @brief How the lighting pass samples a technique's shadow map.
 enum class MapSampler {
@@ -107,7 +108,14 @@ struct ShadowTechniqueTraits {
     /// A deliberately naive reproduction (of acne, of darkening): exempt from the accuracy floors its
     /// defaults are held to elsewhere.
     bool naive = false;
+    /// Texels beyond the receiver its kernel may read besides a tap pattern's (a soft shadow's widest
+    /// penumbra) for these settings: maps keep that margin, and virtual pages that border; null for none.
+    float (*softReachTexels)(const ShadowSettings&) = nullptr;
 };
+
+/// @brief The widest penumbra radius, in texels, the soft techniques search and filter over: a virtual page's
+/// texel spans about a pixel, so 16 (its border holds them); a whole map's may be far finer, so 64.
+float softReachTexels(const ShadowSettings& settings);
 
 /// @brief Every technique's row, in ShadowTechnique order.
 std::span<const ShadowTechniqueTraits> techniqueTable();

@@ -24,7 +24,8 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     mat4 gsShadowMatrix[GS_SHADOW_MAX_MAPS];    // world -> shadow texture space (divide by w)
     vec4 gsShadowTexel[GS_SHADOW_MAX_MAPS];     // x resolution, y 1/resolution, z texel scale, w perspective
     vec4 gsShadowDepthRange[GS_SHADOW_MAX_MAPS]; // xy near, far of a perspective map (zero for orthographic);
-                                                 // z the lit border in texels (LightProjection)
+                                                 // z the lit border in texels (LightProjection); w the light's
+                                                 // size (tan of a sun's angular radius, a local light's radius)
     GsShadowLightMaps gsShadowLights[GS_MAX_LIGHTS];
     vec4 gsShadowViewDepth;                     // view depth of p = dot(gsShadowViewDepth, vec4(p, 1))
     mat4 gsShadowMsmDequantize;                 // MSM 16-bit: inverse of the optimised basis

@@ -50,6 +50,10 @@ struct GsShadowLookup {
     vec2 pointGradient;  // the fragment's depth gradient per texel (GS_SHADOW_GRADIENT_*), else zero
     vec2 screenGradient; // receiver plane from screen derivatives, where a technique needs it
     vec2 tangentGradient; // depth per texel of the receiver's tangent plane (GS_SHADOW_TANGENT_PLANE), else zero
+    float texelWorld;    // a texel's world size at the receiver (of the level read)
+    bool perspective;    // a spot map or cube face: depths from the light (near, far in gsShadowDepthRange)
+    float depthScale;    // an orthographic map's stored depth per world unit along the light
+    float lightSize;     // the light's size (ShadowModule: tan of a sun's angular radius, a local light's radius)
 };
 
 // What a technique returns: visibility, and what the debug views show.
@@ -293,6 +297,10 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     }
     lookup.coord = coord.xy;
     lookup.texel = coord.xy * layerSize;
+    lookup.texelWorld = texelSize;
+    lookup.perspective = perspective;
+    lookup.depthScale = length(vec3(m[0][2], m[1][2], m[2][2]));
+    lookup.lightSize = gsShadowDepthRange[slot].w;
     // The depth bias: format steps of the stored depth, but no less than the arithmetic floor, which is a
     // distance along the light's axis (a fraction of the map's depth range). A perspective map's depth changes
     // by near·far/w² per unit of that range at distance w: as a fixed depth offset the floor would span a

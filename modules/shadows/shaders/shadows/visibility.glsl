@@ -261,6 +261,31 @@ float gsBilinear(vec4 visibilities, vec2 weights) {
                weights.y);
 }
 
+// ---- Percentage-closer soft shadows (Fernando, "Percentage-Closer Soft Shadows", SIGGRAPH 2005 sketch) ----
+
+// The radius, in world units at the receiver, of the region of the map through which a light of `lightSize`
+// reaches a receiver at `receiverDistance` past blockers at `blockerDistance`: the penumbra's half-width, by
+// similar triangles. A sun (`perspective` false; distances along its rays, `lightSize` the tangent of its
+// angular radius): (receiver - blocker) tan θ. A spot or point light (distances from it, `lightSize` its
+// radius): r (receiver - blocker) / blocker. With the map's nearest distance for the blocker it is the blocker
+// search's radius. Zero for a point light, or a blocker not nearer than the receiver; no more than `limit`.
+float gsPcssRadius(float receiverDistance, float blockerDistance, float lightSize, bool perspective, float limit) {
+    float span = receiverDistance - blockerDistance;
+    if (!(span > 0.0f) || !(lightSize > 0.0f)) {
+        return 0.0f;
+    }
+    float radius = perspective ? lightSize * span / max(blockerDistance, span * 1e-6f) : lightSize * span;
+    return min(radius, limit);
+}
+
+// Tap `index` of `count` on a Vogel disk of unit radius (Vogel 1979: r = sqrt((i + 1/2) / n), turned by the
+// golden angle from the tap before), the whole disk turned by `rotation` radians.
+vec2 gsVogelTap(int index, int count, float rotation) {
+    float radius = sqrt((float(index) + 0.5f) / float(max(count, 1)));
+    float angle = float(index) * 2.39996323f + rotation;
+    return vec2(cos(angle), sin(angle)) * radius;
+}
+
 // ---- Filtered shadow maps (advanced shadow mapping reference: VSM, MSM) ----
 
 // The depth moments are taken of: a perspective map's [0,1] depth d crowds towards 1 as far/near grows (at

@@ -1,0 +1,87 @@
+// pcss: percentage-closer soft shadows (Fernando, SIGGRAPH 2005 sketch). A blocker search over the part of the
+// map through which the light's disk reaches the receiver, the penumbra's width from the average blocker's
+// distance by similar triangles (gsPcssRadius), then PCF of that width. The sizes are world units at the
+// receiver, turned into the texels of whatever map, cascade or page the lookup reads, so a penumbra keeps its
+// width across a cascade's or a level's seam. Every tap is compared at the receiver's tangent plane (never
+// deeper than the fragment), not at a plane from screen derivatives, which break at grazing angles and
+// silhouettes; both disks are Vogel disks turned per pixel by interleaved gradient noise (Jimenez 2014), so
+// undersampling shows as fine noise rather than ghost copies of the blocker.
+#ifdef GS_SHADOW_PCSS
+const int GS_PCSS_SEARCH_TAPS = 16;
+const int GS_PCSS_FILTER_TAPS = 24;
+
+// A stored depth as a distance: from the light for a perspective map, along the light for an orthographic one.
+float gsPcssDistance(GsShadowLookup lookup, float depth) {
+    if (lookup.perspective) {
+        vec2 range = gsShadowDepthRange[lookup.slot].xy;
+        return range.x * range.y / max(range.y - depth * (range.y - range.x), range.x * 1e-6);
+    }
+    return depth / max(lookup.depthScale, 1e-30);
+}
+
+// One filter tap: the 2x2 texels around `texel`, each compared at the receiver's tangent plane there, blended
+// bilinearly (as receiver-plane's single tap).
+float gsPcssTap(GsShadowLookup lookup, vec2 texel) {
+    vec2 footprint = floor(texel - 0.5);
+    vec2 weights = texel - 0.5 - footprint;
+    vec4 gathered = gsShadowGather(lookup, (footprint + 1.0) * lookup.inverseSize);
+    // Gather order x (-,+), y (+,+), z (+,-), w (-,-): each texel centre's offset from the receiver.
+    vec2 base = footprint + 0.5 - lookup.texel;
+    vec4 lit = vec4(
+        gsCompare(gathered.x, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(0.0, 1.0),
+                                                                         lookup.tangentGradient, true))),
+        gsCompare(gathered.y, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 1.0),
+                                                                         lookup.tangentGradient, true))),
+        gsCompare(gathered.z, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 0.0),
+                                                                         lookup.tangentGradient, true))),
+        gsCompare(gathered.w, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base,
+                                                                         lookup.tangentGradient, true))));
+    return gsBilinear(lit, weights);
+}
+
+GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
+    float receiver = gsPcssDistance(lookup, lookup.depth);
+    float nearest = gsPcssDistance(lookup, 0.0);
+    // The widest radius searched or filtered, texels (softReachTexels: maps and pages keep that margin).
+    float limit = gsShadowTechniqueParameters.x * lookup.texelWorld;
+    float searchTexels = gsPcssRadius(receiver, nearest, lookup.lightSize, lookup.perspective, limit) /
+                         max(lookup.texelWorld, 1e-30);
+    if (searchTexels < 0.5) {
+        // A light of no size (or a receiver at the map's near plane): one comparison, a hard shadow.
+        vec2 centre = floor(lookup.texel) + 0.5;
+        float stored = gsShadowDepthAt(lookup, centre);
+        float reference = gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, lookup.tangentGradient, true);
+        return gsShadowResult(gsCompare(stored, gsShadowReference(reference)), stored, lookup);
+    }
+    float angle = 6.28318531 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    // Blocker search: the mean depth of the taps nearer than the receiver's plane there.
+    float blockerSum = 0.0;
+    int blockers = 0;
+    for (int i = 0; i < GS_PCSS_SEARCH_TAPS; ++i) {
+        vec2 offset = gsVogelTap(i, GS_PCSS_SEARCH_TAPS, angle) * searchTexels;
+        vec2 centre = floor(lookup.texel + offset) + 0.5;
+        float stored = gsShadowDepthAt(lookup, centre);
+        float reference = gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, lookup.tangentGradient, true);
+        if (stored < gsShadowReference(reference)) {
+            blockerSum += stored;
+            ++blockers;
+        }
+    }
+    if (blockers == 0) {
+        return gsShadowResult(1.0, 1.0, lookup); // nothing between the receiver and any part of the light
+    }
+    float blocker = gsPcssDistance(lookup, blockerSum / float(blockers));
+    float filterTexels = gsPcssRadius(receiver, blocker, lookup.lightSize, lookup.perspective, limit) /
+                         max(lookup.texelWorld, 1e-30);
+    if (blockers == GS_PCSS_SEARCH_TAPS && filterTexels <= searchTexels) {
+        return gsShadowResult(0.0, blockerSum / float(blockers), lookup); // the whole light hidden
+    }
+    float sum = 0.0;
+    for (int i = 0; i < GS_PCSS_FILTER_TAPS; ++i) {
+        sum += gsPcssTap(lookup, lookup.texel + gsVogelTap(i, GS_PCSS_FILTER_TAPS, angle + 1.0) *
+                                                      max(filterTexels, 0.5));
+    }
+    return gsShadowResult(sum / float(GS_PCSS_FILTER_TAPS), blockerSum / float(blockers), lookup);
+}
+#define gsShadowSample gsShadowSample_Pcss
+#endif
