@@ -241,6 +241,15 @@ void ControlPanel::drawLightAndCamera(Session& session) {
     }
     tooltip("The file's first light, or a conversion of it: a spot gets a cone just covering the scene, and "
             "a sun's intensity is scaled by the distance squared, so the scene's centre stays as bright.");
+    const bool sun = session.scene().lightType() == engine::LightType::Directional;
+    float size = sun ? glm::degrees(session.scene().lightSize()) : session.scene().lightSize();
+    if (ImGui::SliderFloat(sun ? "light size (deg)" : "light radius", &size, 0.0f, sun ? 10.0f : 1.0f,
+                           sun ? "%.2f" : "%.3f", ImGuiSliderFlags_Logarithmic)) {
+        session.scene().setLightSize(sun ? glm::radians(size) : size);
+    }
+    tooltip("The light's size, for soft shadows (pcss) and their ray-traced truth: a sun's angular diameter "
+            "(the real sun's is 0.53 degrees), a spot or point light's radius in world units; 0 casts hard "
+            "shadows.");
     ImGui::Text("light %s", settings.light ? "at the angles above" : "as in the file");
     ImGui::SameLine();
     if (ImGui::Button("file's light")) {

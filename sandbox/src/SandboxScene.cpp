@@ -92,6 +92,22 @@ engine::LightType SandboxScene::lightType() const {
     return loaded_.scene.entity(light_).light->type;
 }
 
+float SandboxScene::lightSize() const {
+    const engine::LightComponent& light = *loaded_.scene.entity(light_).light;
+    return light.type == engine::LightType::Directional ? light.angularDiameter : light.radius;
+}
+
+void SandboxScene::setLightSize(float size) {
+    engine::LightComponent& light = *loaded_.scene.entity(light_).light;
+    const float largest = light.type == engine::LightType::Directional
+                              ? engine::LightComponent::kMaxAngularDiameter
+                          : light.range > 0.0f ? light.range
+                                               : std::numeric_limits<float>::max();
+    // Just below the largest the loader accepts (its bound is exclusive); NaN becomes 0.
+    const float clamped = std::clamp(std::isnan(size) ? 0.0f : size, 0.0f, std::nextafter(largest, 0.0f));
+    (light.type == engine::LightType::Directional ? light.angularDiameter : light.radius) = clamped;
+}
+
 SandboxSettings::LightAngles SandboxScene::fileLightAngles() const {
     // The light's own transform may be overridden by apply(); read the file's through its parent.
     const engine::Entity& entity = loaded_.scene.entity(light_);

@@ -55,6 +55,13 @@ public:
     /// so, and so does the control panel's light type choice.
     void setLightType(engine::LightType type);
 
+    /// @brief The first light's size: a sun's angular diameter (radians), a spot or point light's radius.
+    [[nodiscard]] float lightSize() const;
+    /// @brief Sets the first light's size (as lightSize()), clamped to what a file may hold (a sun's below
+    /// 90°, a local light's below its range): soft shadows (pcss) and their truth follow it; 0 casts hard
+    /// ones.
+    void setLightSize(float size);
+
     /// @brief Moves the first mesh entity by `offset` from where the file has it (zero puts it back): a
     /// moving caster for the soak run's virtual maps.
     void offsetFirstMesh(const glm::vec3& offset);

@@ -185,3 +185,24 @@ TEST_F(SplitRendererGLTest, LightTypesConvertBothWaysAndRestoreTheFile) {
     session.scene().setLightType(engine::LightType::Directional);
     EXPECT_EQ(sandbox::test::compare(render(session), directional, 0).maxAbsDiff, 0);
 }
+
+TEST_F(SplitRendererGLTest, LightSizeSoftensPcssAndIsClampedToWhatAFileMayHold) {
+    SandboxSettings settings = smallKnob();
+    settings.a.technique = shadows::ShadowTechnique::Pcss;
+    settings.b.technique = shadows::ShadowTechnique::Pcss;
+    Session session(catalog, settings);
+    EXPECT_FLOAT_EQ(session.scene().lightSize(), engine::LightComponent::kSunAngularDiameter);
+    session.scene().setLightSize(0.0f);
+    const engine::Image hard = render(session);
+    session.scene().setLightSize(glm::radians(8.0f));
+    EXPECT_FLOAT_EQ(session.scene().lightSize(), glm::radians(8.0f));
+    // A sun 8° wide spreads the knob's shadow edges into penumbrae.
+    EXPECT_GT(sandbox::test::compare(render(session), hard, 8).fractionAbove, 0.002);
+    session.scene().setLightSize(-1.0f);
+    EXPECT_EQ(session.scene().lightSize(), 0.0f);
+    session.scene().setLightSize(10.0f);
+    EXPECT_LT(session.scene().lightSize(), engine::LightComponent::kMaxAngularDiameter);
+    session.scene().setLightType(engine::LightType::Point);
+    session.scene().setLightSize(0.05f);
+    EXPECT_FLOAT_EQ(session.scene().lightSize(), 0.05f);
+}

@@ -7,10 +7,6 @@
 namespace shadowbench {
 
 namespace {
-std::size_t indexOf(glm::ivec2 size, int x, int y) {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
-}
-
 /// Exact squared Euclidean distance of a sampled function along one line, in place (Felzenszwalb &
 /// Huttenlocher, "Distance Transforms of Sampled Functions", ToC 2012, section 2.1: the lower envelope of the
 /// parabolas rooted at each sample).
@@ -64,20 +60,20 @@ std::vector<double> squaredDistanceTo(glm::ivec2 size, const std::vector<std::ui
     for (int x = 0; x < size.x; ++x) {
         line.resize(static_cast<std::size_t>(size.y));
         for (int y = 0; y < size.y; ++y) {
-            line[static_cast<std::size_t>(y)] = distance[indexOf(size, x, y)];
+            line[static_cast<std::size_t>(y)] = distance[pixelIndex(size, x, y)];
         }
         distanceTransform1d(line);
         for (int y = 0; y < size.y; ++y) {
-            distance[indexOf(size, x, y)] = line[static_cast<std::size_t>(y)];
+            distance[pixelIndex(size, x, y)] = line[static_cast<std::size_t>(y)];
         }
     }
     for (int y = 0; y < size.y; ++y) {
-        line.assign(distance.begin() + static_cast<std::ptrdiff_t>(indexOf(size, 0, y)),
-                    distance.begin() +
-                        static_cast<std::ptrdiff_t>(indexOf(size, 0, y) + static_cast<std::size_t>(size.x)));
+        line.assign(distance.begin() + static_cast<std::ptrdiff_t>(pixelIndex(size, 0, y)),
+                    distance.begin() + static_cast<std::ptrdiff_t>(pixelIndex(size, 0, y) +
+                                                                   static_cast<std::size_t>(size.x)));
         distanceTransform1d(line);
         std::copy(line.begin(), line.end(),
-                  distance.begin() + static_cast<std::ptrdiff_t>(indexOf(size, 0, y)));
+                  distance.begin() + static_cast<std::ptrdiff_t>(pixelIndex(size, 0, y)));
     }
     return distance;
 }
@@ -153,24 +149,24 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
             for (int nx = std::max(x - windowPixels, 0); nx <= std::min(x + windowPixels, size.x - 1); ++nx) {
-                const std::size_t j = indexOf(size, nx, y);
-                rowLit[indexOf(size, x, y)] |= static_cast<std::uint8_t>(lit(j));
-                rowDark[indexOf(size, x, y)] |= static_cast<std::uint8_t>(dark(j));
+                const std::size_t j = pixelIndex(size, nx, y);
+                rowLit[pixelIndex(size, x, y)] |= static_cast<std::uint8_t>(lit(j));
+                rowDark[pixelIndex(size, x, y)] |= static_cast<std::uint8_t>(dark(j));
             }
         }
     }
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
             for (int ny = std::max(y - windowPixels, 0); ny <= std::min(y + windowPixels, size.y - 1); ++ny) {
-                nearLit[indexOf(size, x, y)] |= rowLit[indexOf(size, x, ny)];
-                nearDark[indexOf(size, x, y)] |= rowDark[indexOf(size, x, ny)];
+                nearLit[pixelIndex(size, x, y)] |= rowLit[pixelIndex(size, x, ny)];
+                nearDark[pixelIndex(size, x, y)] |= rowDark[pixelIndex(size, x, ny)];
             }
         }
     }
     // Whether a pixel of the other truth lies within the band of receiver (x, y): rings outwards, so that
     // most band pixels stop at their first ring.
     const auto inBand = [&](int x, int y) {
-        const std::size_t i = indexOf(size, x, y);
+        const std::size_t i = pixelIndex(size, x, y);
         const bool iLit = lit(i);
         for (int ring = 1; ring <= windowPixels; ++ring) {
             for (int dy = -ring; dy <= ring; ++dy) {
@@ -184,7 +180,7 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
                     if (nx < 0 || nx >= size.x) {
                         continue;
                     }
-                    const std::size_t j = indexOf(size, nx, ny);
+                    const std::size_t j = pixelIndex(size, nx, ny);
                     if ((iLit ? dark(j) : lit(j)) && (ring == 1 || plane.texelsBetween(i, j) <= bandTexels)) {
                         return true;
                     }
@@ -196,7 +192,7 @@ std::vector<PixelClass> classify(glm::ivec2 size, std::span<const float> truth,
     std::vector<PixelClass> classes(count, PixelClass::Ignored);
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
-            const std::size_t i = indexOf(size, x, y);
+            const std::size_t i = pixelIndex(size, x, y);
             if (surfaces[i] != Surface::Receiver) {
                 continue;
             }
@@ -232,7 +228,7 @@ std::vector<PixelClass> classifyByScreenBand(glm::ivec2 size, std::span<const fl
     std::vector<PixelClass> classes(truth.size(), PixelClass::Ignored);
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
-            const std::size_t i = indexOf(size, x, y);
+            const std::size_t i = pixelIndex(size, x, y);
             if (surfaces[i] != Surface::Receiver) {
                 continue;
             }
@@ -242,7 +238,7 @@ std::vector<PixelClass> classifyByScreenBand(glm::ivec2 size, std::span<const fl
                 const int nx = x + disc[k].x;
                 const int ny = y + disc[k].y;
                 if (nx >= 0 && ny >= 0 && nx < size.x && ny < size.y) {
-                    const std::size_t j = indexOf(size, nx, ny);
+                    const std::size_t j = pixelIndex(size, nx, ny);
                     band = iLit ? dark(j) : lit(j);
                 }
             }
@@ -364,12 +360,12 @@ std::vector<std::uint8_t> edgePixels(glm::ivec2 size, std::span<const PixelClass
         if (x < 0 || y < 0 || x >= size.x || y >= size.y) {
             return false;
         }
-        const std::size_t j = indexOf(size, x, y);
+        const std::size_t j = pixelIndex(size, x, y);
         return classes[j] != PixelClass::Ignored && visibility[j] >= 0.5f;
     };
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
-            const std::size_t i = indexOf(size, x, y);
+            const std::size_t i = pixelIndex(size, x, y);
             if (classes[i] == PixelClass::Ignored || visibility[i] >= 0.5f) {
                 continue;
             }
@@ -393,13 +389,13 @@ std::vector<std::uint8_t> concaveMask(glm::ivec2 size, std::span<const glm::vec3
     std::vector<std::uint8_t> mask(positions.size(), 0);
     for (int y = 1; y + 1 < size.y; ++y) {
         for (int x = 1; x + 1 < size.x; ++x) {
-            const std::size_t i = indexOf(size, x, y);
+            const std::size_t i = pixelIndex(size, x, y);
             if (!covered[i]) {
                 continue;
             }
             for (const glm::ivec2 axis : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
-                const std::size_t a = indexOf(size, x - axis.x, y - axis.y);
-                const std::size_t b = indexOf(size, x + axis.x, y + axis.y);
+                const std::size_t a = pixelIndex(size, x - axis.x, y - axis.y);
+                const std::size_t b = pixelIndex(size, x + axis.x, y + axis.y);
                 if (!covered[a] || !covered[b]) {
                     continue;
                 }

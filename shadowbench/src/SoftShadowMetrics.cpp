@@ -9,10 +9,6 @@ namespace shadowbench {
 
 namespace {
 
-std::size_t indexOf(glm::ivec2 size, int x, int y) {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
-}
-
 bool receiver(std::span<const PixelClass> classes, std::size_t i) {
     return classes[i] != PixelClass::Ignored;
 }
@@ -29,7 +25,7 @@ std::optional<float> sample(glm::ivec2 size, std::span<const PixelClass> classes
     const glm::vec2 f = p - glm::vec2(base);
     float corners[4];
     for (int c = 0; c < 4; ++c) {
-        const std::size_t i = indexOf(size, base.x + (c & 1), base.y + (c >> 1));
+        const std::size_t i = pixelIndex(size, base.x + (c & 1), base.y + (c >> 1));
         if (!receiver(classes, i)) {
             return std::nullopt;
         }
@@ -127,7 +123,7 @@ SoftShadowMetrics softShadowMetrics(glm::ivec2 size, std::span<const PixelClass>
     const int reach = static_cast<int>(std::ceil(kPenumbraDilation));
     for (int y = 0; y < size.y; ++y) {
         for (int x = 0; x < size.x; ++x) {
-            const std::size_t i = indexOf(size, x, y);
+            const std::size_t i = pixelIndex(size, x, y);
             if (!receiver(classes, i) || !(truth[i] > 0.02f && truth[i] < 0.98f)) {
                 continue;
             }
@@ -137,7 +133,7 @@ SoftShadowMetrics softShadowMetrics(glm::ivec2 size, std::span<const PixelClass>
                     const int py = y + dy;
                     if (px >= 0 && py >= 0 && px < size.x && py < size.y &&
                         static_cast<float>(dx * dx + dy * dy) <= kPenumbraDilation * kPenumbraDilation) {
-                        penumbra[indexOf(size, px, py)] = 1;
+                        penumbra[pixelIndex(size, px, py)] = 1;
                     }
                 }
             }
@@ -171,11 +167,11 @@ SoftShadowMetrics softShadowMetrics(glm::ivec2 size, std::span<const PixelClass>
     std::vector<double> errors;
     for (int y = 1; y + 1 < size.y; ++y) {
         for (int x = 1; x + 1 < size.x; ++x) {
-            const std::size_t i = indexOf(size, x, y);
-            const std::size_t left = indexOf(size, x - 1, y);
-            const std::size_t right = indexOf(size, x + 1, y);
-            const std::size_t down = indexOf(size, x, y - 1);
-            const std::size_t up = indexOf(size, x, y + 1);
+            const std::size_t i = pixelIndex(size, x, y);
+            const std::size_t left = pixelIndex(size, x - 1, y);
+            const std::size_t right = pixelIndex(size, x + 1, y);
+            const std::size_t down = pixelIndex(size, x, y - 1);
+            const std::size_t up = pixelIndex(size, x, y + 1);
             if (!receiver(classes, i) || truth[i] < 0.5f) {
                 continue;
             }

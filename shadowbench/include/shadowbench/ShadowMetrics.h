@@ -10,6 +10,11 @@
 
 namespace shadowbench {
 
+/// @brief The index of pixel (`x`, `y`) in an image of `size`, rows from the bottom.
+inline std::size_t pixelIndex(glm::ivec2 size, int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
+}
+
 /// @brief What each receiver pixel is in the ground truth.
 enum class PixelClass : std::uint8_t {
     Ignored,  ///< background, or a surface facing away from the light by its smoothed normal or its facet
