@@ -185,11 +185,12 @@ if [ "${only[1]:-virtual}" = virtual ]; then
 fi
 
 if [ "${only[1]:-soft}" = soft ]; then
-# 12. Soft shadows: pcss, the default and the filtered techniques against the ray-traced truth of each light's own
-#     size (8² rays a pixel, and its distance from 16²), on the soft-shadow scenes, the room and the outdoor
-#     scene, at 2048² and (where pcss's 64-texel reach holds the widest penumbrae) 256².
+# 12. Soft shadows: pcss, its naive reproduction, the default and the filtered techniques against the ray-traced
+#     truth of each light's own size (8² rays a pixel, and its distance from 16²), on the soft-shadow scenes, the
+#     room and the outdoor scene, at 2048² and (where pcss's 64-texel reach holds the widest penumbrae) 256².
 "$bench" --scene soft-contact --scene soft-overlap --scene soft-fence --scene room --scene outdoor \
-    --techniques default,pcf,gsm,evsm,pcss --resolutions 2048 --soft 8 --accuracy-only --out "$work/soft"
+    --techniques default,pcf,gsm,evsm,pcss,pcss-screen-plane --resolutions 2048 --soft 8 --accuracy-only \
+    --out "$work/soft"
 "$bench" --scene soft-contact --scene soft-overlap --techniques pcss --resolutions 256 --soft 8 --accuracy-only \
     --out "$work/soft-coarse"
 fi

@@ -37,6 +37,11 @@ float bilinearReach(const ShadowSettings&) {
     return kBilinearReach;
 }
 
+/// The soft techniques' reach, texels, for the shader (gsShadowTechniqueParameters.x).
+glm::vec4 softReachParameters(const ShadowSettings& settings) {
+    return glm::vec4(softReachTexels(settings), 0.0f, 0.0f, 0.0f);
+}
+
 glm::vec2 evsmExponents(const ShadowSettings& settings) {
     return {settings.evsmPositiveExponent, settings.evsmNegativeExponent};
 }
@@ -260,15 +265,27 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
          "compared at the receiver's tangent plane; the search and the penumbra from the light's own size "
          "(a sun's angular diameter, a local light's radius) in world units, converted per map, cascade "
          "and page, up to 64 texels (16 on virtual pages); no blocker found: lit, every tap a blocker: "
-         "shadowed; a light of "
-         "size 0: one comparison",
+         "shadowed; a light of size 0: one comparison",
      .reference = "Fernando, SIGGRAPH 2005 sketch",
      .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCSS", "GS_SHADOW_TANGENT_PLANE"},
-     .shaderParameters =
-         [](const ShadowSettings& s) { return glm::vec4(softReachTexels(s), 0.0f, 0.0f, 0.0f); },
+     .shaderParameters = softReachParameters,
      .footprintTexels = bilinearReach,
      .biasesDepth = true,
+     .softReachTexels = softReachTexels},
+    {.technique = T::PcssScreenPlane,
+     .name = "pcss-screen-plane",
+     .summary =
+         "`pcss` as engines ship it (16 + 24 taps, HDRP's defaults): each tap compared at the receiver's "
+         "plane from screen derivatives (receiver-plane depth bias), not its tangent plane; the naive "
+         "reproduction `pcss` is measured against",
+     .reference = "Fernando 2005; receiver plane: bias reference, \"Receiver Plane Depth Bias\"",
+     .sampler = Sampler::DepthLinear,
+     .defines = {"GS_SHADOW_PCSS_SCREEN_PLANE", "GS_SHADOW_GRADIENT_SCREEN"},
+     .shaderParameters = softReachParameters,
+     .footprintTexels = bilinearReach,
+     .biasesDepth = true,
+     .naive = true,
      .softReachTexels = softReachTexels},
 }};
 

@@ -33,10 +33,11 @@ enum class ShadowTechnique {
     PcfAdaptiveBias, ///< the same for every PCF tap
     PcfGsmConnected, ///< PCF over GSM, taps continuing the receiver's surface without a jump count as lit
     Pcss,            ///< percentage-closer soft shadows: blocker search, penumbra from the light's size, PCF
+    PcssScreenPlane, ///< the same with each tap compared at a plane from screen derivatives: naive
 };
 
 /// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::Pcss) + 1;
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::PcssScreenPlane) + 1;
 
 /// @brief How the lighting pass samples a technique's shadow map.
 enum class MapSampler {

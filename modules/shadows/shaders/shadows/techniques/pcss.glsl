@@ -6,7 +6,16 @@
 // deeper than the fragment), not at a plane from screen derivatives, which break at grazing angles and
 // silhouettes; both disks are Vogel disks turned per pixel by interleaved gradient noise (Jimenez 2014), so
 // undersampling shows as fine noise rather than ghost copies of the blocker.
-#ifdef GS_SHADOW_PCSS
+#if defined(GS_SHADOW_PCSS) || defined(GS_SHADOW_PCSS_SCREEN_PLANE)
+// pcss-screen-plane (naive) compares at the plane from screen derivatives instead, as Filament, HDRP and MJP's
+// sample do, biased both ways.
+#ifdef GS_SHADOW_PCSS_SCREEN_PLANE
+#define GS_PCSS_PLANE(lookup) lookup.screenGradient
+const bool GS_PCSS_NEVER_DEEPER = false;
+#else
+#define GS_PCSS_PLANE(lookup) lookup.tangentGradient
+const bool GS_PCSS_NEVER_DEEPER = true;
+#endif
 const int GS_PCSS_SEARCH_TAPS = 16;
 const int GS_PCSS_FILTER_TAPS = 24;
 
@@ -27,15 +36,15 @@ float gsPcssTap(GsShadowLookup lookup, vec2 texel) {
     vec4 gathered = gsShadowGather(lookup, (footprint + 1.0) * lookup.inverseSize);
     // Gather order x (-,+), y (+,+), z (+,-), w (-,-): each texel centre's offset from the receiver.
     vec2 base = footprint + 0.5 - lookup.texel;
-    vec4 lit = vec4(
-        gsCompare(gathered.x, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(0.0, 1.0),
-                                                                         lookup.tangentGradient, true))),
-        gsCompare(gathered.y, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 1.0),
-                                                                         lookup.tangentGradient, true))),
-        gsCompare(gathered.z, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 0.0),
-                                                                         lookup.tangentGradient, true))),
-        gsCompare(gathered.w, gsShadowReference(gsReceiverPlaneTapDepth(lookup.depth, base,
-                                                                         lookup.tangentGradient, true))));
+    vec2 plane = GS_PCSS_PLANE(lookup);
+    vec4 references = vec4(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(0.0, 1.0), plane, GS_PCSS_NEVER_DEEPER),
+                           gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 1.0), plane, GS_PCSS_NEVER_DEEPER),
+                           gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 0.0), plane, GS_PCSS_NEVER_DEEPER),
+                           gsReceiverPlaneTapDepth(lookup.depth, base, plane, GS_PCSS_NEVER_DEEPER));
+    vec4 lit = vec4(gsCompare(gathered.x, gsShadowReference(references.x)),
+                    gsCompare(gathered.y, gsShadowReference(references.y)),
+                    gsCompare(gathered.z, gsShadowReference(references.z)),
+                    gsCompare(gathered.w, gsShadowReference(references.w)));
     return gsBilinear(lit, weights);
 }
 
@@ -50,7 +59,8 @@ GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
         // A light of no size (or a receiver at the map's near plane): one comparison, a hard shadow.
         vec2 centre = floor(lookup.texel) + 0.5;
         float stored = gsShadowDepthAt(lookup, centre);
-        float reference = gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, lookup.tangentGradient, true);
+        float reference =
+            gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, GS_PCSS_PLANE(lookup), GS_PCSS_NEVER_DEEPER);
         return gsShadowResult(gsCompare(stored, gsShadowReference(reference)), stored, lookup);
     }
     float angle = 6.28318531 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
@@ -61,7 +71,8 @@ GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
         vec2 offset = gsVogelTap(i, GS_PCSS_SEARCH_TAPS, angle) * searchTexels;
         vec2 centre = floor(lookup.texel + offset) + 0.5;
         float stored = gsShadowDepthAt(lookup, centre);
-        float reference = gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, lookup.tangentGradient, true);
+        float reference =
+            gsReceiverPlaneTapDepth(lookup.depth, centre - lookup.texel, GS_PCSS_PLANE(lookup), GS_PCSS_NEVER_DEEPER);
         if (stored < gsShadowReference(reference)) {
             blockerSum += stored;
             ++blockers;
