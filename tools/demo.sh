@@ -34,9 +34,10 @@ echo "demo: every technique on $sheet_scene against the ray-traced truth (gs-sha
 render=./build/bin/gs-render
 mapfile -t techniques < <("$render" --list-techniques)
 scenes=(torus bowl thin-shell crease-cube grazing-plane spheres room outdoor)
+soft_scenes=(soft-contact soft-overlap soft-fence) # lights with a size, shown with the soft technique
 shopt -s nullglob # no corpus (assimp missing): nothing to render
 models=(corpus/*.glb)
-steps=$((${#techniques[@]} + ${#scenes[@]} + ${#models[@]}))
+steps=$((${#techniques[@]} + ${#scenes[@]} + ${#soft_scenes[@]} + ${#models[@]}))
 step=0
 # render_step LABEL gs-render-options...: one image, its report.json and a progress line; gs-render's own lines go
 # to out/render.log.
@@ -54,6 +55,9 @@ for technique in "${techniques[@]}"; do
 done
 for scene in "${scenes[@]}"; do
     render_step "$scene" --scene "$scene" --out "$out/scenes/$scene"
+done
+for scene in "${soft_scenes[@]}"; do
+    render_step "$scene pcss" --scene "$scene" --technique pcss --out "$out/scenes/$scene"
 done
 for model in "${models[@]}"; do
     name=$(basename "$model" .glb)
