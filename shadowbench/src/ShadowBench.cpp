@@ -544,6 +544,8 @@ int mapReadsPerLookup(const shadows::ShadowSettings& settings) {
     int reads = 1;
     if (plan.traits->jittered) {
         reads = settings.jitterTaps;
+    } else if (plan.traits->softReachTexels) {
+        reads = shadows::kPcssSearchTaps + shadows::kPcssFilterTaps;
     } else if (plan.usesTapPattern) {
         reads = static_cast<int>(settings.tapPattern().offsets.size());
     }

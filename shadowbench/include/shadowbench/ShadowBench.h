@@ -314,8 +314,8 @@ std::vector<float> texelFootprints(glm::ivec2 size, std::span<const glm::vec3> p
                                    std::span<const float> slots = {}, std::span<const float> levels = {});
 
 /// @brief Texture reads of the shadow maps per lookup with `settings`: the kernel's taps (jittered: every
-/// tap, the most an early out leaves), plus the reads of the point gradient (stored: 1; central differences:
-/// 4).
+/// tap, and a soft technique's search and filter taps: the most an early out leaves), plus the reads of the
+/// point gradient (stored: 1; central differences: 4).
 [[nodiscard]] int mapReadsPerLookup(const shadows::ShadowSettings& settings);
 
 /// @brief Settings from a `key=value,key=value` list of ShadowSettings JSON fields (values: true/false,

@@ -114,6 +114,12 @@ struct ShadowTechniqueTraits {
     float (*softReachTexels)(const ShadowSettings&) = nullptr;
 };
 
+/// @brief Map reads of the soft techniques' lookup at most: the blocker search's taps, then the filter's
+/// (GS_PCSS_SEARCH_TAPS, GS_PCSS_FILTER_TAPS in shaders/shadows/techniques/pcss.glsl); the search alone where
+/// it finds no blocker or only blockers.
+inline constexpr int kPcssSearchTaps = 16;
+inline constexpr int kPcssFilterTaps = 24;
+
 /// @brief The widest penumbra radius, in texels, the soft techniques search and filter over: a virtual page's
 /// texel spans about a pixel, so 16 (its border holds them); a whole map's may be far finer, so 64.
 float softReachTexels(const ShadowSettings& settings);

@@ -16,6 +16,7 @@ const bool GS_PCSS_NEVER_DEEPER = false;
 #define GS_PCSS_PLANE(lookup) lookup.tangentGradient
 const bool GS_PCSS_NEVER_DEEPER = true;
 #endif
+// Mirrored by kPcssSearchTaps and kPcssFilterTaps (ShadowTechniqueTraits.h), which the cost model counts.
 const int GS_PCSS_SEARCH_TAPS = 16;
 const int GS_PCSS_FILTER_TAPS = 24;
 
