@@ -99,10 +99,7 @@ float SandboxScene::lightSize() const {
 
 void SandboxScene::setLightSize(float size) {
     engine::LightComponent& light = *loaded_.scene.entity(light_).light;
-    const float largest = light.type == engine::LightType::Directional
-                              ? engine::LightComponent::kMaxAngularDiameter
-                          : light.range > 0.0f ? light.range
-                                               : std::numeric_limits<float>::max();
+    const float largest = light.sizeLimit();
     // Just below the largest the loader accepts (its bound is exclusive); NaN becomes 0.
     const float clamped = std::clamp(std::isnan(size) ? 0.0f : size, 0.0f, std::nextafter(largest, 0.0f));
     (light.type == engine::LightType::Directional ? light.angularDiameter : light.radius) = clamped;

@@ -531,9 +531,7 @@ private:
         }
         const tinygltf::Value& value = source.extras.Get(field);
         const double size = value.IsNumber() ? value.GetNumberAsDouble() : std::nan("");
-        const double largest = directional          ? engine::LightComponent::kMaxAngularDiameter
-                               : light.range > 0.0f ? static_cast<double>(light.range)
-                                                    : static_cast<double>(std::numeric_limits<float>::max());
+        const double largest = light.sizeLimit();
         if (!std::isfinite(size) || size < 0.0 || size >= largest) {
             std::ostringstream text;
             text << label << " extras." << field << " must be a number in [0, " << largest << ")"

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <limits>
 #include <memory>
 
 namespace engine {
@@ -50,6 +51,14 @@ struct LightComponent {
     /// Spot and point only: the radius of the light's sphere, world units, for soft shadows. Default 0, a
     /// point.
     float radius = 0.0f;
+
+    /// @brief Where the light's size (angularDiameter for a directional light, radius for a spot or point
+    /// light) must stay below: a hemisphere for a sun, the range (or the largest float) for a local light.
+    [[nodiscard]] float sizeLimit() const {
+        return type == LightType::Directional ? kMaxAngularDiameter
+               : range > 0.0f                 ? range
+                                              : std::numeric_limits<float>::max();
+    }
 
     /// @brief The sun's mean angular diameter seen from the Earth, 0.53°, in radians.
     static constexpr float kSunAngularDiameter = 0.53f * 3.14159265358979f / 180.0f;

@@ -132,11 +132,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
                                                            frame.fit.projection * frame.fit.view, frame.boxes,
                                                            resolution, plan_.kernelReachTexels),
                                          resolution);
-                if (face < 4) {
-                    maps.slots[face] = slot;
-                } else {
-                    maps.faceSlots[face - 4] = slot;
-                }
+                setFaceSlot(maps, face, slot);
             }
             maps.kind.x = drawnKind(maps, LightMapsKind::Cube);
             break;

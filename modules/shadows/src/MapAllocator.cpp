@@ -13,6 +13,14 @@ int addSlot(std::vector<MapSlot>& slots, int lightIndex, const LightProjection& 
     return static_cast<int>(slots.size()) - 1;
 }
 
+void setFaceSlot(LightMapsBlock& maps, int face, int slot) {
+    if (face < 4) {
+        maps.slots[face] = slot;
+    } else {
+        maps.faceSlots[face - 4] = slot;
+    }
+}
+
 std::int32_t drawnKind(const LightMapsBlock& maps, LightMapsKind drawn) {
     const bool any = glm::any(glm::greaterThanEqual(maps.slots, glm::ivec4(0))) ||
                      glm::any(glm::greaterThanEqual(maps.faceSlots, glm::ivec4(0)));

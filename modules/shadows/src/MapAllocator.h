@@ -80,6 +80,10 @@ public:
 /// its index, or -1 when the projection has nothing to draw or all kMaxMaps slots are taken.
 int addSlot(std::vector<MapSlot>& slots, int lightIndex, const LightProjection& projection, int resolution);
 
+/// @brief Records `slot` as face `face` of a cube map (or a spot map's, face 0) in `maps`: faces 0–3 in
+/// `slots`, 4 and 5 in `faceSlots`.
+void setFaceSlot(LightMapsBlock& maps, int face, int slot);
+
 /// @brief `drawn` when any slot of `maps` holds a map this frame, else None (the lighting pass reads
 /// nothing).
 std::int32_t drawnKind(const LightMapsBlock& maps, LightMapsKind drawn);

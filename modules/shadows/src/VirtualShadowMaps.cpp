@@ -529,11 +529,7 @@ void VirtualShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSl
         for (int face = 0; face < light.faceCount; ++face) {
             const int slot = addSlot(slots, light.index, light.faces[static_cast<std::size_t>(face)].face,
                                      kVirtualResolution);
-            if (face < 4) {
-                maps.slots[face] = slot;
-            } else {
-                maps.faceSlots[face - 4] = slot;
-            }
+            setFaceSlot(maps, face, slot);
         }
         maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::VirtualFaces), light.levels(), light.faceCount,
                                light.pageLayer);

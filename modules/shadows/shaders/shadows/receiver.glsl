@@ -120,6 +120,34 @@ vec4 gsShadowGather(GsShadowLookup lookup, vec2 coord) {
     return textureGather(gsShadowMaps, vec3(coord, float(lookup.layer)));
 }
 
+// The 2x2 texels around `texel`, each compared at the depth of the receiver's plane of slope `gradient` (depth
+// per texel) at that texel centre's offset from the receiver (gsReceiverPlaneTapDepth), blended bilinearly.
+// `stored` and `reference` return the (-,-) texel's depth and the depth it was compared at.
+float gsPlaneCompareBilinear(GsShadowLookup lookup, vec2 texel, vec2 gradient, bool clampToLit, out float stored,
+                             out float reference) {
+    // textureGather returns the 2x2 footprint's depths. The reference nudges the coordinate by 1/512 texel so
+    // frac() and the gather agree on the footprint; we gather at the footprint's centre instead, which is half a
+    // texel from any selection boundary, so the two agree on every implementation's sub-texel precision.
+    vec2 footprint = floor(texel - 0.5);
+    vec2 weights = texel - 0.5 - footprint;
+    vec4 gathered = gsShadowGather(lookup, (footprint + 1.0) * lookup.inverseSize);
+    // Gather order x (-,+), y (+,+), z (+,-), w (-,-): each texel centre's offset from the receiver.
+    vec2 offset = texel - lookup.texel;
+    vec4 references =
+        vec4(gsReceiverPlaneTapDepth(lookup.depth, offset + vec2(-weights.x, 1.0 - weights.y), gradient, clampToLit),
+             gsReceiverPlaneTapDepth(lookup.depth, offset + vec2(1.0 - weights.x, 1.0 - weights.y), gradient,
+                                     clampToLit),
+             gsReceiverPlaneTapDepth(lookup.depth, offset + vec2(1.0 - weights.x, -weights.y), gradient, clampToLit),
+             gsReceiverPlaneTapDepth(lookup.depth, offset + vec2(-weights.x, -weights.y), gradient, clampToLit));
+    vec4 lit = vec4(gsCompare(gathered.x, gsShadowReference(references.x)),
+                    gsCompare(gathered.y, gsShadowReference(references.y)),
+                    gsCompare(gathered.z, gsShadowReference(references.z)),
+                    gsCompare(gathered.w, gsShadowReference(references.w)));
+    stored = gathered.w;
+    reference = references.w;
+    return gsBilinear(lit, weights);
+}
+
 // Filtered moments under the lookup: bilinear at the one level the map has. The blur, where asked for, has
 // filtered them over its width; a mip level as wide as the lookup's footprint mixes a caster's moments into
 // receivers beside its shadow, which Chebyshev's and Hamburger's bounds read as partial occlusion or light. With

@@ -29,24 +29,12 @@ float gsPcssDistance(GsShadowLookup lookup, float depth) {
     return depth / max(lookup.depthScale, 1e-30);
 }
 
-// One filter tap: the 2x2 texels around `texel`, each compared at the receiver's tangent plane there, blended
-// bilinearly (as receiver-plane's single tap).
+// One filter tap: the 2x2 texels around `texel`, each compared at the receiver's plane there, blended
+// bilinearly.
 float gsPcssTap(GsShadowLookup lookup, vec2 texel) {
-    vec2 footprint = floor(texel - 0.5);
-    vec2 weights = texel - 0.5 - footprint;
-    vec4 gathered = gsShadowGather(lookup, (footprint + 1.0) * lookup.inverseSize);
-    // Gather order x (-,+), y (+,+), z (+,-), w (-,-): each texel centre's offset from the receiver.
-    vec2 base = footprint + 0.5 - lookup.texel;
-    vec2 plane = GS_PCSS_PLANE(lookup);
-    vec4 references = vec4(gsReceiverPlaneTapDepth(lookup.depth, base + vec2(0.0, 1.0), plane, GS_PCSS_NEVER_DEEPER),
-                           gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 1.0), plane, GS_PCSS_NEVER_DEEPER),
-                           gsReceiverPlaneTapDepth(lookup.depth, base + vec2(1.0, 0.0), plane, GS_PCSS_NEVER_DEEPER),
-                           gsReceiverPlaneTapDepth(lookup.depth, base, plane, GS_PCSS_NEVER_DEEPER));
-    vec4 lit = vec4(gsCompare(gathered.x, gsShadowReference(references.x)),
-                    gsCompare(gathered.y, gsShadowReference(references.y)),
-                    gsCompare(gathered.z, gsShadowReference(references.z)),
-                    gsCompare(gathered.w, gsShadowReference(references.w)));
-    return gsBilinear(lit, weights);
+    float stored;
+    float reference;
+    return gsPlaneCompareBilinear(lookup, texel, GS_PCSS_PLANE(lookup), GS_PCSS_NEVER_DEEPER, stored, reference);
 }
 
 GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
