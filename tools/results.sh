@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only virtual|soft] [work folder, default out/results]
-# --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads), --only soft step 12, and
-# replaces only that step's section of docs/RESULTS.md ("Virtual maps", "Soft shadows"), which then says so.
+# Usage: bash tools/results.sh [--only virtual|soft|cost] [work folder, default out/results]
+# --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads), --only soft step 12, --only
+# cost step 10, and replaces only that step's section of docs/RESULTS.md ("Virtual maps", "Soft shadows", "Cost
+# model"), which then says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        virtual | soft) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'virtual' or 'soft'" >&2; exit 2 ;;
+        virtual | soft | cost) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'virtual', 'soft' or 'cost'" >&2; exit 2 ;;
     esac
     shift 2
 fi
@@ -150,19 +151,22 @@ done
     --accuracy-only --size 320x240 --shimmer-path 16 --config "unsnapped:texelSnapping=false,resolution=2048" \
     --config "bounds:directionalFit=bounds,resolution=2048" --out "$work/path-shimmer"
 
-# 10. The cost model: every technique at its defaults, timed, on a real model, the generated apron (one mesh) and
-#     the knob, with the reference pass's cost of one more read per fragment on each (--cost-model); then each
-#     variant's instructions as Mesa compiles them (MESA_GLSL=dump).
-"$bench" --scene cylinder-engine --scene apron-merged --scene knob --defaults --cost-model --frames 5 \
-    --out "$work/cost-model"
-/usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
-
 elif [ "${only[1]}" = virtual ]; then
     # The peer rows step 11 reads: VDSM on its scenes the peer has (step 4 runs these among the others).
     bash tools/corpus.sh
     for model in suzanne fzk-haus cylinder-engine terrain; do
         peer "corpus/$model.glb" vdsm
     done
+fi
+
+if [ "${only[1]:-cost}" = cost ]; then
+[ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
+# 10. The cost model: every technique at its defaults, timed, on a real model, the generated apron (one mesh) and
+#     the knob, with the reference pass's cost of one more read per fragment on each (--cost-model); then each
+#     variant's instructions as Mesa compiles them (MESA_GLSL=dump).
+"$bench" --scene cylinder-engine --scene apron-merged --scene knob --defaults --cost-model --frames 5 \
+    --out "$work/cost-model"
+/usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
 fi
 
 if [ "${only[1]:-virtual}" = virtual ]; then
@@ -185,14 +189,19 @@ if [ "${only[1]:-virtual}" = virtual ]; then
 fi
 
 if [ "${only[1]:-soft}" = soft ]; then
-# 12. Soft shadows: pcss, its naive reproduction, the default and the filtered techniques against the ray-traced
-#     truth of each light's own size (8² rays a pixel, and its distance from 16²), on the soft-shadow scenes, the
-#     room and the outdoor scene, at 2048² and (where pcss's 64-texel reach holds the widest penumbrae) 256².
+# 12. Soft shadows: pcss, its naive reproduction, msm-soft, the default and the filtered techniques against the
+#     ray-traced truth of each light's own size (8² rays a pixel, and its distance from 16²), on the soft-shadow
+#     scenes, the room and the outdoor scene, at 2048² and (where the soft techniques' reach holds the widest
+#     penumbrae) 256².
 "$bench" --scene soft-contact --scene soft-overlap --scene soft-fence --scene room --scene outdoor \
-    --techniques default,pcf,gsm,evsm,pcss,pcss-screen-plane --resolutions 2048 --soft 8 --accuracy-only \
-    --out "$work/soft"
-"$bench" --scene soft-contact --scene soft-overlap --techniques pcss --resolutions 256 --soft 8 --accuracy-only \
-    --out "$work/soft-coarse"
+    --techniques default,pcf,gsm,evsm,msm,pcss,pcss-screen-plane,msm-soft --resolutions 2048 --soft 8 \
+    --accuracy-only --out "$work/soft"
+"$bench" --scene soft-contact --scene soft-overlap --techniques pcss,msm-soft --resolutions 256 --soft 8 \
+    --accuracy-only --out "$work/soft-coarse"
+#     Cascade seams: the wall and the fence with 4 cascades, where the seams cross their penumbrae.
+"$bench" --scene soft-contact --scene soft-fence --techniques pcss --resolutions 2048 --soft 8 --accuracy-only \
+    --config "pcss-4-cascades:technique=pcss,cascadeCount=4" \
+    --config "msm-soft-4-cascades:technique=msm-soft,cascadeCount=4" --out "$work/soft-seams"
 fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).

@@ -94,6 +94,9 @@ std::string uses(const shadows::ShadowSettings& settings) {
     case shadows::MapSampler::Moments:
         text = plan.momentsFormat == GL_RG32F ? "2 filtered moments" : "4 filtered moments";
         break;
+    case shadows::MapSampler::MomentMips:
+        text = "4 moments filtered over their mip chain";
+        break;
     }
     if (plan.usesTapPattern) {
         text += ", tap pattern";

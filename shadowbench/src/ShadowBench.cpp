@@ -354,13 +354,16 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
     const std::vector<shadows::LightProjection> maps = module.lightProjections(scene.light_.index);
     Accuracy accuracy = measureVisibility(scene, std::move(visibility),
                                           receiverTexelSizes(scene.positions_, scene.surfaces_, maps));
-    if (settings.mapAllocation == shadows::MapAllocation::Virtual) {
-        // Each pixel's clipmap level is the finest resident page's over it: read which one it used.
+    const auto slotImage = [&] {
         engine::Engine slotEngine;
         shadows::ShadowSettings slotView = settings;
         slotView.debugView = shadows::ShadowDebugView::Slot;
         slotEngine.addModule(std::make_unique<shadows::ShadowModule>(slotView));
-        const auto read = renderFloat(slotEngine, scene.scene_, scene.camera_, options_.size);
+        return renderFloat(slotEngine, scene.scene_, scene.camera_, options_.size);
+    };
+    if (settings.mapAllocation == shadows::MapAllocation::Virtual) {
+        // Each pixel's clipmap level is the finest resident page's over it: read which one it used.
+        const auto read = slotImage();
         std::vector<float> slots(read.size());
         std::vector<float> pageEdges(read.size());
         std::vector<float> levels(read.size());
@@ -374,9 +377,21 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
             static_cast<float>(shadows::virtualPageBorderTexels(shadows::ShadowPlan::resolve(settings))));
         accuracy.footprints = texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps,
                                               shadows::kVirtualResolution, slots, levels);
+        if (accuracy.soft) {
+            seamWidthJumps(options_.size, slots, *accuracy.soft); // clipmap levels' seams
+        }
     } else {
         accuracy.footprints =
             texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps, settings.resolution);
+        if (accuracy.soft && maps.size() > 1) {
+            // Cascades' (and cube faces') seams: where a penumbra crosses from one map to the next.
+            const auto read = slotImage();
+            std::vector<float> slots(read.size());
+            for (std::size_t i = 0; i < read.size(); ++i) {
+                slots[i] = read[i].x;
+            }
+            seamWidthJumps(options_.size, slots, *accuracy.soft);
+        }
     }
     accuracy.metrics.density = texelDensity(accuracy.classes, accuracy.truth, accuracy.footprints);
     return accuracy;
@@ -544,6 +559,8 @@ int mapReadsPerLookup(const shadows::ShadowSettings& settings) {
     int reads = 1;
     if (plan.traits->jittered) {
         reads = settings.jitterTaps;
+    } else if (plan.sampler == shadows::MapSampler::MomentMips) {
+        reads = shadows::kMomentSoftFetches;
     } else if (plan.traits->softReachTexels) {
         reads = shadows::kPcssSearchTaps + shadows::kPcssFilterTaps;
     } else if (plan.usesTapPattern) {
@@ -729,7 +746,11 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                 {"widthSamples", r.soft->widthSamples},
                                                 {"widthMissing", r.soft->widthMissing},
                                                 {"widthErrorMedian", r.soft->widthErrorMedian},
-                                                {"widthErrorP95", r.soft->widthErrorP95}})},
+                                                {"widthErrorP95", r.soft->widthErrorP95},
+                                                {"widthRatioMedian", r.soft->widthRatioMedian},
+                                                {"seamPairs", r.soft->seamPairs},
+                                                {"seamJumpMedian", r.soft->seamJumpMedian},
+                                                {"seamJumpMax", r.soft->seamJumpMax}})},
              {"pixels",
               {{"receivers", m.receivers},
                {"lit", m.lit},

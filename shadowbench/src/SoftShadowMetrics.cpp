@@ -203,12 +203,55 @@ SoftShadowMetrics softShadowMetrics(glm::ivec2 size, std::span<const PixelClass>
             }
             errors.push_back(std::abs(static_cast<double>(renderedWidth) - trueWidth));
             metrics.widths.emplace_back(trueWidth, renderedWidth);
+            metrics.widthPixels.emplace_back(x, y);
         }
     }
     metrics.widthSamples = errors.size();
     metrics.widthErrorMedian = percentile(errors, 0.5);
     metrics.widthErrorP95 = percentile(errors, 0.95);
+    std::vector<double> ratios;
+    for (const glm::vec2& width : metrics.widths) {
+        ratios.push_back(static_cast<double>(width.y) /
+                         static_cast<double>(width.x)); // true widths >= minimum
+    }
+    metrics.widthRatioMedian = percentile(ratios, 0.5);
     return metrics;
+}
+
+void seamWidthJumps(glm::ivec2 size, std::span<const float> slots, SoftShadowMetrics& metrics) {
+    // The samples by pixel, to find each one's neighbours.
+    std::vector<int> sampleAt(slots.size(), -1);
+    for (std::size_t k = 0; k < metrics.widthPixels.size(); ++k) {
+        sampleAt[pixelIndex(size, metrics.widthPixels[k].x, metrics.widthPixels[k].y)] = static_cast<int>(k);
+    }
+    std::vector<double> jumps;
+    for (std::size_t k = 0; k < metrics.widthPixels.size(); ++k) {
+        const glm::ivec2 a = metrics.widthPixels[k];
+        const float slotA = slots[pixelIndex(size, a.x, a.y)];
+        if (slotA < 0.0f) {
+            continue;
+        }
+        for (int dy = -kSeamPairReach; dy <= kSeamPairReach; ++dy) {
+            for (int dx = -kSeamPairReach; dx <= kSeamPairReach; ++dx) {
+                const glm::ivec2 b = a + glm::ivec2(dx, dy);
+                if (b.x < 0 || b.y < 0 || b.x >= size.x || b.y >= size.y) {
+                    continue;
+                }
+                const int other = sampleAt[pixelIndex(size, b.x, b.y)];
+                const float slotB = slots[pixelIndex(size, b.x, b.y)];
+                // Each pair once (the later sample's), across a seam only.
+                if (other <= static_cast<int>(k) || slotB < 0.0f || slotB == slotA) {
+                    continue;
+                }
+                const glm::vec2 wa = metrics.widths[k];
+                const glm::vec2 wb = metrics.widths[static_cast<std::size_t>(other)];
+                jumps.push_back(std::abs(static_cast<double>((wa.y - wb.y) - (wa.x - wb.x))));
+            }
+        }
+    }
+    metrics.seamPairs = jumps.size();
+    metrics.seamJumpMax = jumps.empty() ? 0.0 : *std::max_element(jumps.begin(), jumps.end());
+    metrics.seamJumpMedian = percentile(jumps, 0.5);
 }
 
 } // namespace shadowbench

@@ -20,6 +20,8 @@ TEST(MapReadsPerLookup, CountsEveryTapOfTheKernel) {
     // pcss: the blocker search and the filter, the most its early outs leave.
     EXPECT_EQ(shadowbench::mapReadsPerLookup(with(shadows::ShadowTechnique::Pcss)), 40);
     EXPECT_EQ(shadowbench::mapReadsPerLookup(with(shadows::ShadowTechnique::PcssScreenPlane)), 40);
+    // msm-soft: the search region's moments and the penumbra's, one fetch each whatever the width.
+    EXPECT_EQ(shadowbench::mapReadsPerLookup(with(shadows::ShadowTechnique::MsmSoft)), 2);
 }
 
 } // namespace

@@ -50,7 +50,19 @@ struct FloorExceptions {
     double edgePercentile95 = kEdgePercentile95Floor;
     /// Techniques whose acne or leak exceed the floor there: {acne, leak} ceilings.
     std::map<ShadowTechnique, std::pair<double, double>> rates{};
+    /// Techniques whose edges exceed the view's ceilings there: {mean, p95} ceilings.
+    std::map<ShadowTechnique, std::pair<double, double>> edges{};
 };
+
+/// msm-soft's measured ceilings where it misses the floor (against the hard truth: its penumbrae are the
+/// widest of the soft techniques', and the moments' bound lets light through wires and thin poles under a low
+/// sun; docs/RESULTS.md, "Soft shadows").
+FloorExceptions withMsmSoft(FloorExceptions exceptions, std::pair<double, double> rates,
+                            std::pair<double, double> edges) {
+    exceptions.rates[ShadowTechnique::MsmSoft] = rates;
+    exceptions.edges[ShadowTechnique::MsmSoft] = edges;
+    return exceptions;
+}
 
 /// Measures every non-naive technique at its defaults on `scene` and checks it against the floor, or where
 /// `exceptions` name it, against their ceilings (printing "[ misses the floor ]" for each miss). Leak is
@@ -93,8 +105,12 @@ void expectDefaultsMeetTheFloor(const ShadowBench& bench, const BenchScene& scen
             EXPECT_LT(m.leakRate, std::max(leakCeiling, kLeakFloor)) << label;
         }
         if (edgesScored) {
-            EXPECT_LE(edgeMean, exceptions.edgeMean) << label;
-            EXPECT_LE(edgePercentile95, exceptions.edgePercentile95) << label;
+            const auto edges = exceptions.edges.find(technique);
+            EXPECT_LE(edgeMean, edges != exceptions.edges.end() ? edges->second.first : exceptions.edgeMean)
+                << label;
+            EXPECT_LE(edgePercentile95,
+                      edges != exceptions.edges.end() ? edges->second.second : exceptions.edgePercentile95)
+                << label;
         }
     }
 }
@@ -181,16 +197,20 @@ INSTANTIATE_TEST_SUITE_P(
     Views, LargeViewBenchGLTest,
     testing::Values(LargeView{"terrain", engine::LightAngles{30.0f, 40.0f}, {7.7, 21.0}},
                     LargeView{"terrain", engine::LightAngles{30.0f, 5.0f}, {2.7, 15.0}},
-                    LargeView{"terrain", engine::LightAngles{30.0f, 1.0f}, {5.7, 49.0}},
-                    LargeView{"terrain", engine::LightAngles{210.0f, 40.0f}, {7.0, 29.0}},
+                    LargeView{"terrain", engine::LightAngles{30.0f, 1.0f},
+                              withMsmSoft({5.7, 49.0}, {0.0, 0.0022}, {12.3, 49.0})},
+                    LargeView{"terrain", engine::LightAngles{210.0f, 40.0f},
+                              withMsmSoft({7.0, 29.0}, {0.0, 0.00125}, {7.0, 29.0})},
                     LargeView{"terrain-low", {}, {1.9, 8.5}},
-                    LargeView{"apron-merged", engine::LightAngles{75.0f, 8.0f}, {}},
-                    LargeView{"apron-merged",
-                              engine::LightAngles{75.0f, 3.0f},
-                              {kEdgeMeanFloor,
-                               kEdgePercentile95Floor,
-                               {{T::Gsm, {0.0011, 0.0}}, {T::HardwarePcf, {0.0008, 0.0}}}}},
-                    LargeView{"apron", engine::LightAngles{75.0f, 8.0f}, {}}),
+                    LargeView{"apron-merged", engine::LightAngles{75.0f, 8.0f},
+                              withMsmSoft({}, {0.0, 0.030}, {0.83, 5.4})},
+                    LargeView{"apron-merged", engine::LightAngles{75.0f, 3.0f},
+                              withMsmSoft({kEdgeMeanFloor,
+                                           kEdgePercentile95Floor,
+                                           {{T::Gsm, {0.0011, 0.0}}, {T::HardwarePcf, {0.0008, 0.0}}}},
+                                          {0.0, 0.042}, {0.62, 4.5})},
+                    LargeView{"apron", engine::LightAngles{75.0f, 8.0f},
+                              withMsmSoft({}, {0.0, 0.030}, {0.83, 5.4})}),
     [](const auto& test) {
         std::string name = test.param.label();
         std::replace(name.begin(), name.end(), '-', '_');
@@ -231,7 +251,9 @@ TEST_P(EveryLightBenchGLTest, EveryTechniqueAtItsDefaultsMeetsTheFloor) {
     const ShadowBench bench(context, options);
     const std::string name = GetParam();
     const auto scene = bench.prepare(name, std::filesystem::path(CONTENT_DIR) / "scenes" / (name + ".gltf"));
-    expectDefaultsMeetTheFloor(bench, *scene, name, true);
+    expectDefaultsMeetTheFloor(bench, *scene, name, true,
+                               name == "outdoor" ? withMsmSoft({}, {0.0, 0.0}, {kEdgeMeanFloor, 3.4})
+                                                 : FloorExceptions{});
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryLightBenchGLTest, testing::Values("room", "outdoor"),

@@ -79,6 +79,42 @@ TEST(SoftShadowMetrics, ANarrowerPenumbraIsOffByTheWidthsDifference) {
     EXPECT_EQ(softShadowMetrics(kSize, kReceivers, truth, narrow, 20.0f).widthSamples, 0u);
 }
 
+TEST(SoftShadowMetrics, WidthRatioSaysWhetherPenumbraeAreTooWideOrTooNarrow) {
+    const std::vector<float> truth = ramp(20.0f, 40.0f);
+    EXPECT_NEAR(softShadowMetrics(kSize, kReceivers, truth, ramp(25.0f, 35.0f)).widthRatioMedian, 0.5, 0.02);
+    EXPECT_NEAR(softShadowMetrics(kSize, kReceivers, truth, truth).widthRatioMedian, 1.0, 1e-3);
+}
+
+TEST(SoftShadowMetrics, SeamJumpIsTheWidthChangeBetweenMapsBeyondTheTruths) {
+    // The upper half reads map 0 and renders the truth; the lower half reads map 1 and a penumbra 3.2 px
+    // narrower (ramp 22-38: 12.8 px from 0.1 to 0.9).
+    const std::vector<float> truth = ramp(20.0f, 40.0f);
+    std::vector<float> rendered = truth;
+    const std::vector<float> narrower = ramp(22.0f, 38.0f);
+    std::vector<float> slots(truth.size(), 0.0f);
+    for (std::size_t i = static_cast<std::size_t>(16 * kSize.x); i < truth.size(); ++i) {
+        rendered[i] = narrower[i];
+        slots[i] = 1.0f;
+    }
+    SoftShadowMetrics metrics = softShadowMetrics(kSize, kReceivers, truth, rendered);
+    seamWidthJumps(kSize, slots, metrics);
+    EXPECT_GT(metrics.seamPairs, 0u);
+    EXPECT_NEAR(metrics.seamJumpMedian, 3.2, 0.1);
+    EXPECT_NEAR(metrics.seamJumpMax, 3.2, 0.1);
+    // The same change within one map is no seam's; pixels that read no map pair with none.
+    SoftShadowMetrics oneMap = softShadowMetrics(kSize, kReceivers, truth, rendered);
+    seamWidthJumps(kSize, std::vector<float>(truth.size(), 0.0f), oneMap);
+    EXPECT_EQ(oneMap.seamPairs, 0u);
+    SoftShadowMetrics unmapped = softShadowMetrics(kSize, kReceivers, truth, rendered);
+    seamWidthJumps(kSize, std::vector<float>(truth.size(), -1.0f), unmapped);
+    EXPECT_EQ(unmapped.seamPairs, 0u);
+    // A penumbra as the truth's on both sides has no jump.
+    SoftShadowMetrics exact = softShadowMetrics(kSize, kReceivers, truth, truth);
+    seamWidthJumps(kSize, slots, exact);
+    EXPECT_GT(exact.seamPairs, 0u);
+    EXPECT_NEAR(exact.seamJumpMax, 0.0, 1e-3);
+}
+
 TEST(SoftShadowMetrics, CountsFalseLitUmbraAndFalseShadowOutsideTheMask) {
     const std::vector<float> truth = ramp(40.0f, 50.0f);
     std::vector<float> rendered = truth;

@@ -74,3 +74,22 @@ TEST(ShadowMapArrayGLTest, UnblurredMomentsHaveNoBlurTemporary) {
     EXPECT_FALSE(target.blurTemporary || target.blurFramebuffer);
     EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 8u); // D24 depth and RG32F moments
 }
+
+TEST(ShadowMapArrayGLTest, SoftMomentsHaveTheirMipChainCountedInTheirBytes) {
+    glTestContext();
+    ShadowSettings settings;
+    settings.technique = ShadowTechnique::MsmSoft;
+    const ShadowPlan plan = ShadowPlan::resolve(settings);
+    const ShadowMapArray target(256, 1, plan);
+    ASSERT_TRUE(target.moments);
+    // Levels 256² down to 4² (7 levels), each read by the sampler at the width a pixel asks for.
+    EXPECT_EQ(textureLevelParameter(target.moments->id(), 6, GL_TEXTURE_WIDTH), 4);
+    EXPECT_EQ(textureLevelParameter(target.moments->id(), 7, GL_TEXTURE_WIDTH), 0);
+    std::size_t momentTexels = 0;
+    for (int side = 256; side >= 4; side /= 2) {
+        momentTexels += static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+    }
+    EXPECT_EQ(target.bytes(plan), 256u * 256u * 4u + momentTexels * 8u); // D24, RGBA16 moments
+    // A map smaller than the chain ends at one texel.
+    EXPECT_EQ(ShadowMapArray::momentLevels(16, plan), 5);
+}

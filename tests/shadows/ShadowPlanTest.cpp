@@ -109,6 +109,30 @@ TEST(ShadowPlanTest, MomentsAreBlurredOnlyForAMomentTechniqueWithABlurRadius) {
     EXPECT_FALSE(ShadowPlan::resolve(settings).blursMoments);
 }
 
+TEST(ShadowPlanTest, SoftMomentsHaveAMipChainUpToTheirWidestRadius) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::MsmSoft};
+    ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.sampler, MapSampler::MomentMips);
+    // Radius 64 texels at most on a whole map (level 6, whose kernel reaches 96), 8 on virtual pages.
+    EXPECT_EQ(momentSoftRadiusLimit(settings), 64.0f);
+    EXPECT_EQ(plan.momentLevels, 7);
+    EXPECT_GE(plan.kernelReachTexels, kMomentKernelReach * momentSoftRadiusLimit(settings));
+    EXPECT_EQ(plan.shaderParameters.x, 64.0f);
+    settings.mapAllocation = MapAllocation::Virtual;
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.momentLevels, 4);
+    EXPECT_LE(kMomentKernelReach * momentSoftRadiusLimit(settings), plan.kernelReachTexels);
+    // Always msm's quantised basis, stored and read the same way.
+    EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RGBA16));
+    EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_MSM_QUANTIZED"));
+    EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_STORE_MOMENTS4"));
+    // Every other technique's moments keep their one level.
+    for (const ShadowTechnique technique :
+         {ShadowTechnique::Msm, ShadowTechnique::Evsm, ShadowTechnique::Vsm}) {
+        EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{.technique = technique}).momentLevels, 1);
+    }
+}
+
 TEST(ShadowPlanTest, AdaptiveBiasTakesTheNearestComparisonsNormalOffset) {
     for (const ShadowTechnique technique :
          {ShadowTechnique::AdaptiveBias, ShadowTechnique::PcfAdaptiveBias}) {

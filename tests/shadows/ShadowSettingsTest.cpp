@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace shadows;
 
@@ -17,6 +18,20 @@ TEST(ShadowSettingsTest, ValidateNamesEveryBadField) {
     ASSERT_EQ(problems.size(), 4u);
     EXPECT_EQ(problems[0], "resolution 32 is outside [64, 16384]");
     EXPECT_TRUE(ShadowSettings{}.validate().empty());
+}
+
+TEST(ShadowSettingsTest, LightSizeScaleIsRefusedNegativeNotANumberOrHuge) {
+    for (const float scale : {-0.5f, std::nanf(""), std::numeric_limits<float>::infinity(), 17.0f}) {
+        ShadowSettings settings;
+        settings.technique = ShadowTechnique::Pcss;
+        settings.lightSizeScale = scale;
+        const std::vector<std::string> problems = settings.validate();
+        ASSERT_EQ(problems.size(), 1u) << scale;
+        EXPECT_NE(problems[0].find("lightSizeScale"), std::string::npos) << problems[0];
+    }
+    ShadowSettings hard;
+    hard.lightSizeScale = 0.0f;
+    EXPECT_TRUE(hard.validate().empty());
 }
 
 TEST(ShadowSettingsTest, CircularAverageFormsForceTheCircularLayout) {

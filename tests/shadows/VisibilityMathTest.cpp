@@ -326,6 +326,54 @@ TEST(FilteredShadowMathTest, MsmIsFiniteForConstantDepthTexels) {
     }
 }
 
+TEST(MomentSoftMathTest, BlockerOfATwoDepthMixtureIsTheNearerDepth) {
+    // 40 % of the search region a blocker at depth 0.3, the rest the receiver's surface at 0.7.
+    const glm::vec4 moments = 0.4f * g::gsMsmMoments(0.3f) + 0.6f * g::gsMsmMoments(0.7f);
+    float fraction = -1.0f;
+    EXPECT_NEAR(g::gsMsmBlocker(moments, 0.69f, 1e-6f, fraction), 0.3f, 0.01f);
+    EXPECT_NEAR(fraction, 0.4f, 0.01f);
+    // Its fraction is Hamburger's shadow intensity there.
+    EXPECT_NEAR(fraction, 1.0f - g::gsMsmVisibility(moments, 0.69f, 1e-6f), 1e-4f);
+}
+
+TEST(MomentSoftMathTest, BlockersAtTwoDepthsAverageByWeight) {
+    // Three depths, the farthest the receiver's: the bound's distribution is exactly this one, so the
+    // blockers' mean is (0.3 * 0.2 + 0.5 * 0.5) / 0.8.
+    const glm::vec4 moments =
+        0.3f * g::gsMsmMoments(0.2f) + 0.5f * g::gsMsmMoments(0.5f) + 0.2f * g::gsMsmMoments(0.8f);
+    float fraction = -1.0f;
+    EXPECT_NEAR(g::gsMsmBlocker(moments, 0.8f, 1e-7f, fraction), 0.3875f, 0.01f);
+    EXPECT_NEAR(fraction, 0.8f, 0.01f);
+}
+
+TEST(MomentSoftMathTest, NothingInFrontOfTheReceiverIsNoBlocker) {
+    const glm::vec4 moments = 0.5f * g::gsMsmMoments(0.6f) + 0.5f * g::gsMsmMoments(0.9f);
+    float fraction = -1.0f;
+    EXPECT_EQ(g::gsMsmBlocker(moments, 0.5f, 3e-5f, fraction), 0.5f);
+    EXPECT_EQ(fraction, 0.0f);
+}
+
+TEST(MomentSoftMathTest, BlockerIsFiniteAndInRangeForSingularAndExtremeMoments) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const float z : {0.0f, 1e-4f, 0.25f, 0.5f, 0.999f, 1.0f}) {
+        for (const float bias : {0.0f, 3e-5f, 9e-3f}) {
+            for (const float receiver : {0.0f, z - 1e-3f, z, z + 1e-3f, 1.0f}) {
+                float fraction = -1.0f;
+                const float blocker = g::gsMsmBlocker(g::gsMsmMoments(z), receiver, bias, fraction);
+                EXPECT_TRUE(std::isfinite(blocker)) << z << " " << bias << " " << receiver;
+                EXPECT_GE(fraction, 0.0f);
+                EXPECT_LE(fraction, 1.0f);
+                EXPECT_LE(blocker, std::max(receiver, 0.0f) + 1e-3f) << z << " " << bias << " " << receiver;
+            }
+        }
+    }
+    float fraction = -1.0f;
+    g::gsMsmBlocker(glm::vec4(nan), 0.5f, 3e-5f, fraction);
+    EXPECT_EQ(fraction, 0.0f);
+    g::gsMsmBlocker(g::gsMsmMoments(0.5f), nan, 3e-5f, fraction);
+    EXPECT_EQ(fraction, 0.0f);
+}
+
 TEST(FilteredShadowMathTest, QuantisedMomentsRoundTripWithinTheSixteenBitBound) {
     const glm::mat4 inverse = glm::inverse(g::GS_MSM_QUANTIZE);
     // The bound: half a 16-bit step through the inverse transform (its largest absolute row sum).

@@ -319,7 +319,12 @@ std::string softText(const shadowbench::BenchResult& result) {
     text << std::setprecision(3) << "penumbra RMSE " << soft.penumbraRmse << " over " << soft.penumbraPixels
          << " px, false lit " << soft.falseLit << ", false shadow " << soft.falseShadow << ", width error "
          << soft.widthErrorMedian << "/" << soft.widthErrorP95 << " px (median/p95 of " << soft.widthSamples
-         << "), ";
+         << ", widths x" << soft.widthRatioMedian << ")";
+    if (soft.seamPairs > 0) {
+        text << ", seam jump " << soft.seamJumpMedian << "/" << soft.seamJumpMax << " px (median/max of "
+             << soft.seamPairs << ")";
+    }
+    text << ", ";
     return text.str();
 }
 

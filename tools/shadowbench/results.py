@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Writes docs/RESULTS.md and its plots from the results.json files of tools/results.sh's shadowbench runs.
 
-usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only virtual|soft]
+usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only virtual|soft|cost]
 
-With --only virtual (soft), only step 11's (12's) section, "Virtual maps" ("Soft shadows") up to the next "## "
-section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says so; every other section
+With --only virtual (soft, cost), only step 11's (12's, 10's) section, "Virtual maps" ("Soft shadows", "Cost
+model") up to the next "## " section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says so; every other section
 stays as the last full run wrote it.
 """
 import itertools
@@ -22,7 +22,7 @@ from default_rule import edges_scored, map_mib, meets_floor, recommend, scored  
 import cost_model  # noqa: E402
 
 work, results_md, plot_folder = (pathlib.Path(a) for a in sys.argv[1:4])
-if sys.argv[4:] not in ([], ["--only", "virtual"], ["--only", "soft"]):
+if sys.argv[4:] not in ([], ["--only", "virtual"], ["--only", "soft"], ["--only", "cost"]):
     sys.exit(f"results.py: unknown options {' '.join(sys.argv[4:])} (usage: see its docstring)")
 partial = sys.argv[5] if len(sys.argv) > 5 else None
 plot_folder.mkdir(parents=True, exist_ok=True)
@@ -821,7 +821,7 @@ def virtual_texels_section(texels):
     out.append("\n".join(lines) + "\n")
 
 
-def soft_section(soft, coarse):
+def soft_section(soft, coarse, seams):
     """Techniques against the ray-traced truth of each light's own size: penumbra errors and the truth's convergence."""
     out.append("## Soft shadows\n")
     truths = {c["scene"]: c.get("softTruth") for c in soft["scenes"]}
@@ -837,19 +837,28 @@ def soft_section(soft, coarse):
                "0.02, outside the mask) rendered above 0.5; false shadow: lit ones (truth ≥ 0.98) rendered below; "
                "width: the distance between the 0.1 and 0.9 iso-lines along the truth's gradient at its 0.5 "
                "iso-line, rendered against true where the true one is at least 4 px wide, median / 95th percentile "
-               "of the difference in pixels (samples). `pcss` is the soft technique (docs/SHADOWS.md); "
+               "of the difference in pixels (samples), and the median of rendered over true width (above 1: too "
+               "wide). `pcss` is the soft technique (docs/SHADOWS.md); `msm-soft` its filterable variant, two "
+               "fetches of mip-filtered moments whatever the width (docs/SHADOWS.md, \"Filterable soft shadows\"); "
                "`pcss-screen-plane` (naive) is PCSS as engines ship it, each tap compared at the plane from "
                "screen derivatives rather than the receiver's tangent plane: on the flat receivers of these scenes "
                "the two planes agree, and so do their figures; they part at silhouettes and grazing receivers "
                "(the room's acne and false shadow). The others cast one penumbra width everywhere. The goal for a soft shadow: width error median ≤ 1 px and p95 "
-               "≤ 3 px where the true penumbra is at least 4 px wide. `pcss` reaches 64 texels at most: a map "
-               "fitted tightly to `soft-contact`'s wall has texels of a few millimetres at 2048², so the widest "
-               "penumbrae there (a 4° sun, 3.5 m behind the wall's top) are cut; the rows marked 256² show it at a "
-               "map size where they fit.\n")
+               "≤ 3 px where the true penumbra is at least 4 px wide. `pcss` reaches 64 texels at most (`msm-soft` "
+               "a radius of 64, its kernel 96): a map fitted tightly to `soft-contact`'s wall has texels of a few "
+               "millimetres at 2048², so the widest penumbrae there (a 4° sun, 3.5 m behind the wall's top) are "
+               "cut; the rows marked 256² show them at a map size where they fit. Seam jump: where a penumbra crosses "
+               "from one map to the next (cascades; the room's cube faces), pairs of width samples within 3 px on "
+               "either side, and how much the rendered width changes between them beyond the truth's change; "
+               "the goal is 1 px. The `-4-cascades` rows split the wall's and the fence's views in 4 cascades so "
+               "that the seams cross their penumbrae.\n")
     lines = ["| scene | truth: rays, RMS from 4× the rays | configuration | penumbra RMSE / MAE | false lit / umbra px "
-             "| false shadow / lit px | width error median / p95 px (samples) |",
-             "| --- | --- | --- | --- | --- | --- | --- |"]
-    for r in soft["results"] + coarse["results"]:
+             "| false shadow / lit px | width error median / p95 px (samples) | width × | seam jump median / max "
+             "px (pairs) |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    # The seam runs' cascaded rows (their plain pcss row repeats the main run's).
+    cascaded = [r for r in seams["results"] if "cascades" in r["label"]]
+    for r in soft["results"] + coarse["results"] + cascaded:
         q = r.get("soft")
         if not q:
             continue
@@ -857,11 +866,14 @@ def soft_section(soft, coarse):
         truth = (f"{t['samplesPerAxis']}², {t['convergenceRmse']:.4f}" if t else "–")
         lines.append(f"| {r['scene']} | {truth} | {r['label']} | {q['penumbraRmse']:.3f} / {q['penumbraMae']:.3f} | "
                      f"{q['falseLit']} / {q['umbraPixels']} | {q['falseShadow']} / {q['litPixels']} | "
-                     f"{q['widthErrorMedian']:.1f} / {q['widthErrorP95']:.1f} ({q['widthSamples']}) |")
+                     f"{q['widthErrorMedian']:.1f} / {q['widthErrorP95']:.1f} ({q['widthSamples']}) | "
+                     f"{q['widthRatioMedian']:.2f} | " +
+                     (f"{q['seamJumpMedian']:.2f} / {q['seamJumpMax']:.2f} ({q['seamPairs']}) |" if q.get("seamPairs")
+                      else "– |"))
     out.append("\n".join(lines) + "\n")
 
 
-PARTIAL_SECTIONS = {"virtual": "## Virtual maps", "soft": "## Soft shadows"}
+PARTIAL_SECTIONS = {"virtual": "## Virtual maps", "soft": "## Soft shadows", "cost": "## Cost model"}
 
 
 def splice(heading, sections, renderer, option):
@@ -888,8 +900,14 @@ if partial == "virtual":
     sys.exit(0)
 if partial == "soft":
     soft = load("soft")
-    soft_section(soft, load("soft-coarse"))
+    soft_section(soft, load("soft-coarse"), load("soft-seams"))
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, soft["renderer"], partial))
+    sys.exit(0)
+if partial == "cost":
+    costs = load("cost-model")
+    nir_path = work / "cost-model" / "nir-counts.json"
+    out.extend(cost_model.section(costs, json.loads(nir_path.read_text()) if nir_path.exists() else None))
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, costs["renderer"], partial))
     sys.exit(0)
 
 reference_sections()
@@ -908,7 +926,7 @@ if (work / "virtual" / "results.json").exists():
     if (work / "virtual-lights" / "results.json").exists():
         virtual_lights_section(load("virtual-lights"))
 if (work / "soft" / "results.json").exists():
-    soft_section(load("soft"), load("soft-coarse"))
+    soft_section(load("soft"), load("soft-coarse"), load("soft-seams"))
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))

@@ -19,6 +19,14 @@ std::size_t FittedShadowMaps::bytes() const {
     return maps_ ? maps_->bytes(plan_) : 0;
 }
 
+float FittedShadowMaps::kernelReach(const engine::FrameLight& light) const {
+    // A light of no size casts hard shadows whatever the technique: its maps need no soft margin.
+    const float size = light.light.type == engine::LightType::Directional ? light.light.angularDiameter
+                                                                          : light.light.radius;
+    return size * settings_.lightSizeScale > 0.0f ? plan_.kernelReachTexels
+                                                  : plan_.kernelReachTexels - plan_.softReachTexels;
+}
+
 bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
                                            std::vector<MapSlot>& slots, LightMapsBlock& maps) {
     const auto bounds = samples_.measure(host_, frame.frame, frame.fit, lightView(light.direction),
@@ -47,7 +55,7 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     const auto fitted = [&](int cascade) {
         return fitToSamples(light.direction,
                             slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], frame.boxes,
-                            resolution, plan_.kernelReachTexels, settings_.texelSnapping);
+                            resolution, kernelReach(light), settings_.texelSnapping);
     };
     if (count == 1) {
         maps.slots.x = addSlot(slots, light.index, fitted(0), resolution);
@@ -130,7 +138,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
                 const int slot = addSlot(slots, light.index,
                                          fitPointLightFace(light.position, face, light.light.range,
                                                            frame.fit.projection * frame.fit.view, frame.boxes,
-                                                           resolution, plan_.kernelReachTexels),
+                                                           resolution, kernelReach(light)),
                                          resolution);
                 setFaceSlot(maps, face, slot);
             }

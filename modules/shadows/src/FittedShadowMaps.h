@@ -32,6 +32,9 @@ public:
     [[nodiscard]] std::size_t bytes() const override;
 
 private:
+    /// @brief How far, texels, the kernels read beyond a map of `light`: the plan's, less the soft margin for
+    /// a light of no size.
+    [[nodiscard]] float kernelReach(const engine::FrameLight& light) const;
     /// Fits directional light `light`'s maps to the visible samples into `maps` and `slots`; false, having
     /// added nothing, when the view has no sample.
     bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,

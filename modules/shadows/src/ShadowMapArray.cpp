@@ -13,8 +13,9 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
         gradient.emplace(GL_RG32F, size, layers);
     } else if (plan.momentsFormat != 0) {
         // Moments are filtered: blurred when the settings ask for it, then read bilinearly at their one level
-        // (no mip chain: receiver.glsl, gsShadowMoments).
-        moments.emplace(plan.momentsFormat, size, layers);
+        // (no mip chain: receiver.glsl, gsShadowMoments), or over the chain a soft technique reads at its
+        // width.
+        moments.emplace(plan.momentsFormat, size, layers, momentLevels(resolution, plan));
         if (plan.blursMoments) {
             blurTemporary.emplace(plan.momentsFormat, size, 1);
             blurFramebuffer.emplace("shadow moments blur");
@@ -47,13 +48,30 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
     }
 }
 
+int ShadowMapArray::momentLevels(int resolution, const ShadowPlan& plan) {
+    int levels = 1;
+    while (levels < plan.momentLevels && (resolution >> levels) > 0) {
+        ++levels;
+    }
+    return levels;
+}
+
+std::size_t ShadowMapArray::momentTexels(int resolution, const ShadowPlan& plan) {
+    std::size_t texels = 0;
+    for (int level = 0; level < momentLevels(resolution, plan); ++level) {
+        const auto side = static_cast<std::size_t>(resolution >> level);
+        texels += side * side;
+    }
+    return texels;
+}
+
 std::size_t ShadowMapArray::bytes(const ShadowPlan& plan) const {
     const auto side = static_cast<std::size_t>(depth.size().x);
     const std::size_t texels = side * side;
     const auto count = static_cast<std::size_t>(layers());
     std::size_t layer = texels * (plan.depthBytesPerTexel + (gradient ? 8 : 0));
     if (moments) {
-        layer += texels * plan.momentBytesPerTexel;
+        layer += momentTexels(depth.size().x, plan) * plan.momentBytesPerTexel;
     }
     std::size_t total = count * layer;
     if (blurTemporary) {

@@ -252,6 +252,11 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     if (plan_.blursMoments) {
         blurMoments();
     }
+    if (plan_.momentLevels > 1) {
+        // The levels a soft technique filters over; a virtual atlas's tiles keep their chains apart within
+        // the levels its border holds (msm-soft.glsl reads no coarser one).
+        glGenerateTextureMipmap(allocation_->sampled()->moments->id());
+    }
 }
 
 void ShadowModule::blurMoments() {
@@ -345,14 +350,17 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
-        // The light's size as the soft techniques take it: a sun's by the tangent of its angular radius (the
-        // penumbra's half-width per unit of distance behind its blocker), a local light's by its radius.
+        // The light's size as the soft techniques take it, scaled by lightSizeScale: a sun's by the tangent
+        // of its angular radius (the penumbra's half-width per unit of distance behind its blocker; the
+        // diameter kept below 90°), a local light's by its radius.
         float size = 0.0f;
         for (const engine::FrameLight& light : frameLights) {
             if (light.index == slots_[slot].lightIndex) {
+                const float scale = settings_.lightSizeScale;
                 size = light.light.type == engine::LightType::Directional
-                           ? std::tan(0.5f * light.light.angularDiameter)
-                           : light.light.radius;
+                           ? std::tan(0.5f * std::min(scale * light.light.angularDiameter,
+                                                      engine::LightComponent::kMaxAngularDiameter))
+                           : scale * light.light.radius;
             }
         }
         block.depthRange[slot] = glm::vec4(projection.depthRange, projection.litBorderTexels, size);

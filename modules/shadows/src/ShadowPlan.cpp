@@ -1,5 +1,7 @@
 #include <shadows/ShadowPlan.h>
 
+#include <cmath>
+
 namespace shadows {
 
 namespace {
@@ -23,7 +25,7 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
         settings.receiverPlaneKernel == ReceiverPlaneKernel::PerTap) {
         defines.push_back("GS_SHADOW_RPB_PER_TAP");
     }
-    if (settings.technique == ShadowTechnique::Msm && settings.msmQuantize16) {
+    if (quantisesMoments(settings)) {
         defines.push_back("GS_SHADOW_MSM_QUANTIZED");
         plan.depthDefines.push_back("GS_SHADOW_MSM_QUANTIZED");
     }
@@ -131,10 +133,13 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
         plan.depthBiasFloor = settings.depthBiasSteps * kArithmeticDepthStep;
     }
     plan.blursMoments = plan.momentsFormat != 0 && settings.momentBlurRadius > 0;
+    if (plan.sampler == MapSampler::MomentMips) {
+        plan.momentLevels = 1 + static_cast<int>(std::log2(momentSoftRadiusLimit(settings)));
+    }
     plan.needsJitterTexture = plan.traits->jittered;
     // Two texels cover a bilinear footprint and central differences around any tap.
-    plan.kernelReachTexels = 2.0f +
-                             (plan.traits->softReachTexels ? plan.traits->softReachTexels(settings) : 0.0f) +
+    plan.softReachTexels = plan.traits->softReachTexels ? plan.traits->softReachTexels(settings) : 0.0f;
+    plan.kernelReachTexels = 2.0f + plan.softReachTexels +
                              (plan.usesTapPattern || plan.traits->jittered ? settings.pcfRadius : 0.0f) +
                              (plan.momentsFormat != 0 ? static_cast<float>(settings.momentBlurRadius) : 0.0f);
     return plan;

@@ -25,10 +25,15 @@ engine::gl::GlObject<engine::gl::detail::deleteSampler> makeSampler(GLenum filte
 
 ShadowSamplers::ShadowSamplers()
     : compareNearest_(makeSampler(GL_NEAREST, true)), compareLinear_(makeSampler(GL_LINEAR, true)),
-      depthLinear_(makeSampler(GL_LINEAR, false)), moments_(makeSampler(GL_LINEAR, false)) {
-    // Bilinear (the moments have one level); edges clamp (a quantised border would not be "far").
-    glSamplerParameteri(moments_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(moments_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+      depthLinear_(makeSampler(GL_LINEAR, false)), moments_(makeSampler(GL_LINEAR, false)),
+      momentMips_(makeSampler(GL_LINEAR, false)) {
+    // Bilinear (the moments have one level), or trilinear over their chain; edges clamp (a quantised border
+    // would not be "far").
+    glSamplerParameteri(momentMips_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    for (const GLuint sampler : {moments_.id(), momentMips_.id()}) {
+        glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
 }
 
 GLuint ShadowSamplers::forMap(MapSampler sampler) const {
@@ -41,6 +46,8 @@ GLuint ShadowSamplers::forMap(MapSampler sampler) const {
         return depthLinear_.id();
     case MapSampler::Moments:
         return moments_.id();
+    case MapSampler::MomentMips:
+        return momentMips_.id();
     }
     return compareNearest_.id();
 }

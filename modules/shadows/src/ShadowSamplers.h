@@ -21,6 +21,7 @@ private:
     Sampler compareLinear_;
     Sampler depthLinear_;
     Sampler moments_;
+    Sampler momentMips_;
 };
 
 } // namespace shadows

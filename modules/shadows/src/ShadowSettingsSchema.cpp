@@ -56,6 +56,9 @@ bool comparesInHardware(const S& s) {
     const MapSampler sampler = ShadowPlan::resolve(s).sampler;
     return sampler == MapSampler::CompareNearest || sampler == MapSampler::CompareLinear;
 }
+bool storesFourMoments(const S& s) {
+    return shadows::storesFourMoments(s.technique);
+}
 bool filtersMoments(const S& s) {
     return traitsOf(s.technique).moments.format != nullptr;
 }
@@ -64,6 +67,9 @@ bool comparesFuzzily(const S& s) {
 }
 bool chebyshevBound(const S& s) {
     return traitsOf(s.technique).chebyshevBound;
+}
+bool castsSoftShadows(const S& s) {
+    return traitsOf(s.technique).softReachTexels != nullptr;
 }
 bool jittered(const S& s) {
     return traitsOf(s.technique).jittered;
@@ -172,10 +178,16 @@ const std::vector<SettingRow>& rows() {
          FloatSetting{&S::lightBleedingReduction, {.max = 0.95f}, 0.0f, 0.95f, "%.2f"}, chebyshevBound},
         {"msmMomentBias", "", "moment bias",
          "Bias of the moments towards (0, 0.63, 0, 0.63); more hides numerical trouble, leaks more light.",
-         FloatSetting{&S::msmMomentBias, {.max = 0.5f}, 0.0f, 0.05f, "%.2e", true}, only<T::Msm>},
+         FloatSetting{&S::msmMomentBias, {.max = 0.5f}, 0.0f, 0.05f, "%.2e", true}, storesFourMoments},
         {"msmQuantize16", "", "16-bit moments",
          "Store the moments in 16-bit unorm through the optimised basis (64 bits per texel).",
          BoolSetting{&S::msmQuantize16}, only<T::Msm>},
+        {"lightSizeScale", "", "light size scale",
+         "Every light's size (a sun's angular diameter, a local light's radius) times this, for the soft "
+         "techniques: 0 casts hard shadows, 2 penumbrae twice as wide. The ray-traced truth takes the "
+         "light's own "
+         "size.",
+         FloatSetting{&S::lightSizeScale, {.max = 16.0f}, 0.0f, 4.0f, "%.2f"}, castsSoftShadows},
         {"evsmPositiveExponent", "", "positive exponent",
          "c+ of the warp exp(c+ d): larger cuts more light bleeding; 42 at most keeps exp(2 c+) in float32.",
          FloatSetting{&S::evsmPositiveExponent,

@@ -2,6 +2,8 @@
 #include <shadows/ShadowTechniqueTraits.h>
 #include <shadows/VisibilityMath.h>
 
+#include <cmath>
+
 namespace shadows {
 
 namespace {
@@ -42,9 +44,22 @@ glm::vec4 softReachParameters(const ShadowSettings& settings) {
     return glm::vec4(softReachTexels(settings), 0.0f, 0.0f, 0.0f);
 }
 
+/// msm-soft's widest radius, texels, for the shader (gsShadowTechniqueParameters.x).
+glm::vec4 momentSoftParameters(const ShadowSettings& settings) {
+    return glm::vec4(momentSoftRadiusLimit(settings), 0.0f, 0.0f, 0.0f);
+}
+
 glm::vec2 evsmExponents(const ShadowSettings& settings) {
     return {settings.evsmPositiveExponent, settings.evsmNegativeExponent};
 }
+
+// msm's four moments: 32-bit float, or 16-bit through the optimised basis.
+constexpr MomentStore kMsmMoments{
+    "GS_SHADOW_STORE_MOMENTS4",
+    [](const ShadowSettings& s) -> GLenum { return quantisesMoments(s) ? GL_RGBA16 : GL_RGBA32F; },
+    [](const ShadowSettings& s) {
+        return quantisesMoments(s) ? glsl::gsMsmQuantize(glm::vec4(1.0f)) : glm::vec4(1.0f);
+    }};
 
 const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
     {.technique = T::HardCompare,
@@ -189,11 +204,7 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "same, \"Moment Shadow Maps\"; Peters & Klein 2015",
      .sampler = Sampler::Moments,
      .defines = {"GS_SHADOW_MSM"},
-     .moments = {"GS_SHADOW_STORE_MOMENTS4",
-                 [](const ShadowSettings& s) -> GLenum { return s.msmQuantize16 ? GL_RGBA16 : GL_RGBA32F; },
-                 [](const ShadowSettings& s) {
-                     return s.msmQuantize16 ? glsl::gsMsmQuantize(glm::vec4(1.0f)) : glm::vec4(1.0f);
-                 }},
+     .moments = kMsmMoments,
      .footprintTexels = nearestReach},
     {.technique = T::Evsm,
      .name = "evsm",
@@ -287,12 +298,40 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .biasesDepth = true,
      .naive = true,
      .softReachTexels = softReachTexels},
+    {.technique = T::MsmSoft,
+     .name = "msm-soft",
+     .summary =
+         "moment soft shadows: `pcss`'s blocker search, penumbra and filter, each one trilinear fetch of "
+         "`msm`'s moments from their mip chain at the width asked (constant cost); the blockers' mean depth "
+         "from the Hamburger bound's distribution, each compared behind the spread of the receiver's tangent "
+         "plane over the kernel; the moments always in msm's 16-bit basis (as accurate here, half the "
+         "memory); `msmMomentBias` applies",
+     .reference = "Peters, Münstermann, Wetzstein, Klein, I3D 2016 (summed-area tables there, mips here)",
+     .sampler = Sampler::MomentMips,
+     .defines = {"GS_SHADOW_MSM_SOFT", "GS_SHADOW_TANGENT_PLANE"},
+     .moments = kMsmMoments,
+     .shaderParameters = momentSoftParameters,
+     .footprintTexels = nearestReach,
+     .softReachTexels = momentSoftReachTexels},
 }};
 
 } // namespace
 
 float softReachTexels(const ShadowSettings& settings) {
     return settings.mapAllocation == MapAllocation::Virtual ? 16.0f : 64.0f;
+}
+
+bool quantisesMoments(const ShadowSettings& settings) {
+    return settings.technique == ShadowTechnique::MsmSoft ||
+           (settings.technique == ShadowTechnique::Msm && settings.msmQuantize16);
+}
+
+float momentSoftReachTexels(const ShadowSettings& settings) {
+    return settings.mapAllocation == MapAllocation::Virtual ? 16.0f : 96.0f;
+}
+
+float momentSoftRadiusLimit(const ShadowSettings& settings) {
+    return std::exp2(std::floor(std::log2(momentSoftReachTexels(settings) / kMomentKernelReach)));
 }
 
 std::span<const ShadowTechniqueTraits> techniqueTable() {

@@ -38,9 +38,13 @@ int virtualPageBorderTexels(const ShadowPlan& plan) {
 
 std::size_t virtualTileBytes(const ShadowPlan& plan, int pageSize) {
     const auto side = static_cast<std::size_t>(pageSize + 2 * virtualPageBorderTexels(plan));
-    const std::size_t perTexel = plan.depthBytesPerTexel + (plan.storesGradient ? 8 : 0) +
-                                 (plan.momentsFormat != 0 ? plan.momentBytesPerTexel : 0);
-    return side * side * perTexel;
+    // A tile's share of the moments' mip chain: each level a quarter of the one before.
+    std::size_t momentTexels = 0;
+    for (int level = 0; level < std::max(plan.momentLevels, 1); ++level) {
+        momentTexels += (side * side) >> (2 * level);
+    }
+    const std::size_t perTexel = plan.depthBytesPerTexel + (plan.storesGradient ? 8 : 0);
+    return side * side * perTexel + (plan.momentsFormat != 0 ? momentTexels * plan.momentBytesPerTexel : 0);
 }
 
 std::size_t virtualOverheadBytes(int pageSize, int tableLayers) {

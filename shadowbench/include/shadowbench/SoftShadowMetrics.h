@@ -28,9 +28,23 @@ struct SoftShadowMetrics {
     std::size_t widthMissing = 0;
     double widthErrorMedian = 0.0;
     double widthErrorP95 = 0.0;
+    /// Median of rendered over true width: above 1 the penumbrae are too wide, below too narrow.
+    double widthRatioMedian = 0.0;
     /// Each measured sample's true and rendered width, pixels.
     std::vector<glm::vec2> widths;
+    /// Each measured sample's pixel (x, y), in the order of `widths`.
+    std::vector<glm::ivec2> widthPixels;
+    /// Where a penumbra crosses from one map to another (a cascade seam; seamWidthJumps): pairs of samples
+    /// within kSeamPairReach pixels reading different maps, and how much the rendered width changes between
+    /// them beyond the truth's change, pixels (median, largest). No pairs: no seam crosses a measured
+    /// penumbra.
+    std::size_t seamPairs = 0;
+    double seamJumpMedian = 0.0;
+    double seamJumpMax = 0.0;
 };
+
+/// @brief How near, in pixels (each axis), two width samples on either side of a seam are paired.
+inline constexpr int kSeamPairReach = 3;
 
 /// @brief Pixels the penumbra mask is dilated by.
 inline constexpr float kPenumbraDilation = 2.0f;
@@ -41,6 +55,12 @@ inline constexpr float kPenumbraDilation = 2.0f;
 /// than Ignored; a profile leaving them ends there). Negative when a crossing is not found within `reach`.
 float penumbraWidth(glm::ivec2 size, std::span<const PixelClass> classes, std::span<const float> visibility,
                     glm::vec2 from, glm::vec2 direction, float reach, float low = 0.1f, float high = 0.9f);
+
+/// @brief Fills `metrics`' seam figures from `slots`, the map each pixel read (ShadowDebugView::Slot;
+/// negative where none): every pair of its width samples within kSeamPairReach pixels whose slots differ, the
+/// jump
+/// |(rendered_a - rendered_b) - (true_a - true_b)|.
+void seamWidthJumps(glm::ivec2 size, std::span<const float> slots, SoftShadowMetrics& metrics);
 
 /// @brief The soft-shadow errors of `visibility` against the soft `truth` over the receivers of `classes`:
 /// RMSE and MAE over the penumbra mask, false-lit umbra and false-shadow lit pixels outside it, and the

@@ -43,6 +43,9 @@ struct ShadowPlan {
     /// The moments are box-blurred (momentBlurRadius > 0): the blur's temporary layer and passes exist only
     /// then.
     bool blursMoments = false;
+    /// Mip levels of the moments target, generated after the shadow pass: 1 (none) unless the technique
+    /// filters its moments over a width it picks per pixel (MapSampler::MomentMips).
+    int momentLevels = 1;
     /// Bytes of one moments texel.
     std::size_t momentBytesPerTexel = 0;
     /// What empty moments texels hold: the far plane's moments in the stored basis.
@@ -69,6 +72,9 @@ struct ShadowPlan {
     /// central-difference neighbours): cube faces are widened by this much so kernels near a face's edge read
     /// the same face.
     float kernelReachTexels = 0.0f;
+    /// The soft techniques' part of kernelReachTexels (their widest penumbra), which a light of no size
+    /// does not need.
+    float softReachTexels = 0.0f;
     /// The stratified jitter texture of jittered PCF is bound.
     bool needsJitterTexture = false;
 };

@@ -169,6 +169,9 @@ struct ShadowSettings {
     float msmMomentBias = 3e-5f;
     /// Stores moments as 16-bit unorm via the optimised basis (Msm).
     bool msmQuantize16 = false;
+    /// Every light's size (LightComponent::angularDiameter, radius) times this, for the soft techniques
+    /// (Pcss, PcssScreenPlane, MsmSoft): 0 casts hard shadows. A sun's angular diameter stays below 90°.
+    float lightSizeScale = 1.0f;
     /// c+ of the warp exp(c+ d) (Evsm).
     float evsmPositiveExponent = 40.0f;
     /// c- of the warp -exp(-c- d) (Evsm).

@@ -34,10 +34,11 @@ enum class ShadowTechnique {
     PcfGsmConnected, ///< PCF over GSM, taps continuing the receiver's surface without a jump count as lit
     Pcss,            ///< percentage-closer soft shadows: blocker search, penumbra from the light's size, PCF
     PcssScreenPlane, ///< the same with each tap compared at a plane from screen derivatives: naive
+    MsmSoft,         ///< moment soft shadows: PCSS's search and filter as two fetches of mip-filtered moments
 };
 
 /// @brief Number of ShadowTechnique values (keep in step with the last enumerator).
-inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::PcssScreenPlane) + 1;
+inline constexpr std::size_t kTechniqueCount = static_cast<std::size_t>(ShadowTechnique::MsmSoft) + 1;
 
 /// @brief How the lighting pass samples a technique's shadow map.
 enum class MapSampler {
@@ -45,12 +46,13 @@ enum class MapSampler {
     CompareLinear,  ///< sampler2DShadow with LINEAR filtering: hardware 2x2 PCF
     DepthLinear,    ///< sampler2D returning linearly filtered depth (GSM, gathers)
     Moments,        ///< bilinear sampler2D over the moments target (VSM, MSM)
+    MomentMips, ///< trilinear sampler2D over the moments target's mip chain, at the width asked (msm-soft)
 };
 
 struct ShadowSettings;
 
 /// @brief The filtered moments a technique's shadow pass stores per texel besides the depth buffer: blurred
-/// where asked, and read through MapSampler::Moments.
+/// where asked, and read through MapSampler::Moments (or MomentMips, over their mip chain).
 struct MomentStore {
     /// Depth-pass define under which the technique's file defines gsShadowStore(depth).
     std::string_view define;
@@ -120,9 +122,36 @@ struct ShadowTechniqueTraits {
 inline constexpr int kPcssSearchTaps = 16;
 inline constexpr int kPcssFilterTaps = 24;
 
+/// @brief Map reads of msm-soft's lookup at most: the search region's moments, then the penumbra's; one where
+/// the search finds no blocker or only blockers.
+inline constexpr int kMomentSoftFetches = 2;
+
+/// @brief How far a mip level's bilinear kernel reaches, in that level's texels: its nearest texels' centres
+/// lie within one of the lookup, and each averages half a texel around its centre.
+inline constexpr float kMomentKernelReach = 1.5f;
+
+/// @brief msm-soft's reach, texels: its width costs no fetches, so on whole maps half as far again as
+/// `pcss`'s (a margin of 96 texels, 5 % of a 2048² map's side); on virtual pages the same 16.
+float momentSoftReachTexels(const ShadowSettings& settings);
+
+/// @brief msm-soft's widest penumbra radius, texels: a mip level's kernel at radius 2^L reaches 1.5 2^L, so
+/// the largest power of two whose kernel stays within its reach (64 on whole maps, 8 on virtual pages); the
+/// moments' mip chain ends at its level.
+float momentSoftRadiusLimit(const ShadowSettings& settings);
+
 /// @brief The widest penumbra radius, in texels, the soft techniques search and filter over: a virtual page's
 /// texel spans about a pixel, so 16 (its border holds them); a whole map's may be far finer, so 64.
 float softReachTexels(const ShadowSettings& settings);
+
+/// @brief Whether `technique` stores msm's four moments (msmMomentBias applies).
+constexpr bool storesFourMoments(ShadowTechnique technique) {
+    return technique == ShadowTechnique::Msm || technique == ShadowTechnique::MsmSoft;
+}
+
+/// @brief Whether the four moments are stored in the 16-bit optimised basis: msm's where msmQuantize16 asks,
+/// msm-soft's always (its figures equal the 32-bit ones on the soft scenes, at half the memory of a mip chain
+/// a third larger).
+bool quantisesMoments(const ShadowSettings& settings);
 
 /// @brief Every technique's row, in ShadowTechnique order.
 std::span<const ShadowTechniqueTraits> techniqueTable();

@@ -69,6 +69,16 @@ GsShadowSample gsShadowResult(float visibility, float stored, GsShadowLookup loo
     return GsShadowSample(visibility, stored, 0.0, lookup.pointGradient, false);
 }
 
+// A stored depth as a distance, for the soft shadows' similar triangles: from the light for a perspective map,
+// along the light for an orthographic one.
+float gsShadowDistance(GsShadowLookup lookup, float depth) {
+    if (lookup.perspective) {
+        vec2 range = gsShadowDepthRange[lookup.slot].xy;
+        return range.x * range.y / max(range.y - depth * (range.y - range.x), range.x * 1e-6);
+    }
+    return depth / max(lookup.depthScale, 1e-30);
+}
+
 // What the debug views show: the values of the first shadowed light of this fragment.
 float gsDebugVisibility = 1.0;
 float gsDebugGradient = 0.0;
@@ -156,6 +166,12 @@ float gsPlaneCompareBilinear(GsShadowLookup lookup, vec2 texel, vec2 gradient, b
 // first is read, none (docs/SHADOWS.md, "No mip chain for the moments").
 vec4 gsShadowMoments(GsShadowLookup lookup) {
     return textureLod(gsShadowMaps, vec3(lookup.coord, float(lookup.layer)), 0.0);
+}
+
+// The moments filtered over a `width`-texel footprint from their mip chain, for the soft shadows that ask for
+// that width (ShadowPlan::momentLevels): trilinear between the levels around log2(width).
+vec4 gsShadowMomentsOver(GsShadowLookup lookup, float width) {
+    return textureLod(gsShadowMaps, vec3(lookup.coord, float(lookup.layer)), log2(max(width, 1.0)));
 }
 #endif
 

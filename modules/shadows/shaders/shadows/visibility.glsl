@@ -347,9 +347,11 @@ float gsEvsmVisibility(vec4 moments, float depth, vec2 exponents, float minimumV
 // Moment shadow mapping, four moments, Hamburger bound (Peters & Klein 2015, Algorithm 2, as in the reference):
 // bias the moments towards (0, 0.63, 0, 0.63), solve the 3x3 Hankel system by Cholesky, find the two other
 // support points z2 <= z3 of the bound's distribution, then the three cases. Every pivot and denominator is
-// guarded, so singular moments (a constant-depth texel) and negative discriminants stay finite.
-float gsMsmVisibility(vec4 moments, float depth, float momentBias) {
+// guarded, so singular moments (a constant-depth texel) and negative discriminants stay finite. Returns the
+// biased moments' first two (b1, b2) in `biased` for gsMsmBlocker.
+vec2 gsMsmSupport(vec4 moments, float depth, float momentBias, GS_OUT(vec2) biased) {
     vec4 b = mix(moments, vec4(0.0f, 0.63f, 0.0f, 0.63f), momentBias);
+    biased = vec2(b.x, b.y);
     // Cholesky factorisation B = L D L^T of B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]].
     float l21 = b.x;
     float d22 = max(b.y - b.x * b.x, 1e-12f);
@@ -367,8 +369,14 @@ float gsMsmVisibility(vec4 moments, float depth, float momentBias) {
     float p = c2 / safeC3;
     float q = c1 / safeC3;
     float root = sqrt(max(0.25f * p * p - q, 0.0f));
-    float z2 = -0.5f * p - root;
-    float z3 = -0.5f * p + root;
+    return vec2(-0.5f * p - root, -0.5f * p + root);
+}
+
+float gsMsmVisibility(vec4 moments, float depth, float momentBias) {
+    vec2 b;
+    vec2 support = gsMsmSupport(moments, depth, momentBias, b);
+    float z2 = support.x;
+    float z3 = support.y;
     float shadow;
     if (depth <= z2) {
         shadow = 0.0f;
@@ -379,6 +387,31 @@ float gsMsmVisibility(vec4 moments, float depth, float momentBias) {
     }
     float visibility = 1.0f - shadow;
     return visibility == visibility ? gsSaturate(visibility) : 1.0f; // NaN only from NaN input: treat as lit
+}
+
+// The blockers of a filter region from its moments (moment soft shadow mapping's blocker search, Peters et al.,
+// I3D 2016, section 4): the bound's distribution has its atoms at the receiver `depth`, z2 and z3, with the
+// weights that reproduce the moments (Vandermonde: w2 = (d z3 - b1 (d + z3) + b2) / ((z2 - d)(z2 - z3)), w3
+// with z2 and z3 swapped); the atoms in front of the receiver are the blockers. Returns their mean depth, weighted, and their
+// fraction of the region in `fraction` (Hamburger's shadow intensity): 0 where no atom is in front, when the
+// mean is the receiver's own depth.
+float gsMsmBlocker(vec4 moments, float depth, float momentBias, GS_OUT(float) fraction) {
+    vec2 b;
+    vec2 support = gsMsmSupport(moments, depth, momentBias, b);
+    float z2 = support.x;
+    float z3 = support.y;
+    fraction = 0.0f;
+    if (!(depth > z2)) {
+        return depth; // nothing in front of the receiver (or NaN input)
+    }
+    float w2 = gsSaturate((depth * z3 - b.x * (depth + z3) + b.y) / max((z3 - z2) * (depth - z2), 1e-20f));
+    if (depth <= z3) {
+        fraction = w2;
+        return z2;
+    }
+    float w3 = gsSaturate((b.x * (depth + z2) - depth * z2 - b.y) / max((z3 - z2) * (depth - z3), 1e-20f));
+    fraction = gsSaturate(w2 + w3);
+    return w2 + w3 > 1e-12f ? (w2 * z2 + w3 * z3) / (w2 + w3) : z2;
 }
 
 // The optimised moment basis of Peters & Klein 2015 ("Optimized Moment Quantization"): an affine transform that

@@ -20,15 +20,6 @@ const bool GS_PCSS_NEVER_DEEPER = true;
 const int GS_PCSS_SEARCH_TAPS = 16;
 const int GS_PCSS_FILTER_TAPS = 24;
 
-// A stored depth as a distance: from the light for a perspective map, along the light for an orthographic one.
-float gsPcssDistance(GsShadowLookup lookup, float depth) {
-    if (lookup.perspective) {
-        vec2 range = gsShadowDepthRange[lookup.slot].xy;
-        return range.x * range.y / max(range.y - depth * (range.y - range.x), range.x * 1e-6);
-    }
-    return depth / max(lookup.depthScale, 1e-30);
-}
-
 // One filter tap: the 2x2 texels around `texel`, each compared at the receiver's plane there, blended
 // bilinearly.
 float gsPcssTap(GsShadowLookup lookup, vec2 texel) {
@@ -38,8 +29,8 @@ float gsPcssTap(GsShadowLookup lookup, vec2 texel) {
 }
 
 GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
-    float receiver = gsPcssDistance(lookup, lookup.depth);
-    float nearest = gsPcssDistance(lookup, 0.0);
+    float receiver = gsShadowDistance(lookup, lookup.depth);
+    float nearest = gsShadowDistance(lookup, 0.0);
     // The widest radius searched or filtered, texels (softReachTexels: maps and pages keep that margin).
     float limit = gsShadowTechniqueParameters.x * lookup.texelWorld;
     float searchTexels = gsPcssRadius(receiver, nearest, lookup.lightSize, lookup.perspective, limit) /
@@ -70,7 +61,7 @@ GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
     if (blockers == 0) {
         return gsShadowResult(1.0, 1.0, lookup); // nothing between the receiver and any part of the light
     }
-    float blocker = gsPcssDistance(lookup, blockerSum / float(blockers));
+    float blocker = gsShadowDistance(lookup, blockerSum / float(blockers));
     float filterTexels = gsPcssRadius(receiver, blocker, lookup.lightSize, lookup.perspective, limit) /
                          max(lookup.texelWorld, 1e-30);
     if (blockers == GS_PCSS_SEARCH_TAPS && filterTexels <= searchTexels) {
