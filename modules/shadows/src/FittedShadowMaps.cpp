@@ -21,8 +21,8 @@ std::size_t FittedShadowMaps::bytes() const {
 
 float FittedShadowMaps::kernelReach(const engine::FrameLight& light) const {
     // A light of no size casts hard shadows whatever the technique: its maps need no soft margin.
-    const float size = light.light.type == engine::LightType::Directional ? light.light.angularDiameter
-                                                                          : light.light.radius;
+    const float size =
+        light.light.type == engine::LightType::Directional ? light.light.angularDiameter : light.light.radius;
     return size * settings_.lightSizeScale > 0.0f ? plan_.kernelReachTexels
                                                   : plan_.kernelReachTexels - plan_.softReachTexels;
 }

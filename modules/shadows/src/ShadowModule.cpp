@@ -252,9 +252,11 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     if (plan_.blursMoments) {
         blurMoments();
     }
-    if (plan_.momentLevels > 1) {
-        // The levels a soft technique filters over; a virtual atlas's tiles keep their chains apart within
-        // the levels its border holds (msm-soft.glsl reads no coarser one).
+    // The levels a soft technique filters over; a virtual atlas's tiles keep their chains apart within the
+    // levels its border holds (msm-soft.glsl reads no coarser one). A virtual atlas none of whose pages was
+    // drawn this frame keeps last frame's chain.
+    const bool drewPages = !allocation_->servedVirtualMaps() || allocation_->pageStats().rendered > 0;
+    if (plan_.momentLevels > 1 && drewPages) {
         glGenerateTextureMipmap(allocation_->sampled()->moments->id());
     }
 }

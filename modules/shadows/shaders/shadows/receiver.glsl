@@ -79,6 +79,13 @@ float gsShadowDistance(GsShadowLookup lookup, float depth) {
     return depth / max(lookup.depthScale, 1e-30);
 }
 
+// The soft techniques' penumbra radius in the texels of the lookup's map (gsPcssRadius's, from the receiver's and
+// the blocker's distances), up to `limitTexels`.
+float gsSoftRadiusTexels(GsShadowLookup lookup, float receiver, float blocker, float limitTexels) {
+    return gsPcssRadius(receiver, blocker, lookup.lightSize, lookup.perspective, limitTexels * lookup.texelWorld) /
+           max(lookup.texelWorld, 1e-30);
+}
+
 // What the debug views show: the values of the first shadowed light of this fragment.
 float gsDebugVisibility = 1.0;
 float gsDebugGradient = 0.0;

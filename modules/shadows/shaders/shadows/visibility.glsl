@@ -392,9 +392,9 @@ float gsMsmVisibility(vec4 moments, float depth, float momentBias) {
 // The blockers of a filter region from its moments (moment soft shadow mapping's blocker search, Peters et al.,
 // I3D 2016, section 4): the bound's distribution has its atoms at the receiver `depth`, z2 and z3, with the
 // weights that reproduce the moments (Vandermonde: w2 = (d z3 - b1 (d + z3) + b2) / ((z2 - d)(z2 - z3)), w3
-// with z2 and z3 swapped); the atoms in front of the receiver are the blockers. Returns their mean depth, weighted, and their
-// fraction of the region in `fraction` (Hamburger's shadow intensity): 0 where no atom is in front, when the
-// mean is the receiver's own depth.
+// with z2 and z3 swapped); the atoms in front of the receiver are the blockers. Returns their mean depth,
+// weighted, and their fraction of the region in `fraction` (Hamburger's shadow intensity): 0 where no atom is
+// in front, when the mean is the receiver's own depth.
 float gsMsmBlocker(vec4 moments, float depth, float momentBias, GS_OUT(float) fraction) {
     vec2 b;
     vec2 support = gsMsmSupport(moments, depth, momentBias, b);

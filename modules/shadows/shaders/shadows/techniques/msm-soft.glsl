@@ -40,10 +40,8 @@ float gsMsmSoftDistance(GsShadowLookup lookup, float momentDepth) {
 GsShadowSample gsShadowSample_MsmSoft(GsShadowLookup lookup) {
     float receiver = gsShadowDistance(lookup, lookup.depth);
     // The widest radius, texels (momentSoftRadiusLimit): the mip chain's last level.
-    float limit = gsShadowTechniqueParameters.x * lookup.texelWorld;
-    float searchTexels = gsPcssRadius(receiver, gsShadowDistance(lookup, 0.0), lookup.lightSize,
-                                      lookup.perspective, limit) /
-                         max(lookup.texelWorld, 1e-30);
+    float limit = gsShadowTechniqueParameters.x;
+    float searchTexels = gsSoftRadiusTexels(lookup, receiver, gsShadowDistance(lookup, 0.0), limit);
     float fraction = 0.0;
     float blockerDepth = 1.0;
     if (searchTexels >= 0.5) {
@@ -57,9 +55,7 @@ GsShadowSample gsShadowSample_MsmSoft(GsShadowLookup lookup) {
         vec4 moments = gsMsmSoftMoments(lookup, 0.0);
         return gsShadowResult(gsMsmVisibility(moments, lookup.momentDepth, gsShadowMomentBias), moments.x, lookup);
     }
-    float filterTexels = gsPcssRadius(receiver, gsMsmSoftDistance(lookup, blockerDepth), lookup.lightSize,
-                                      lookup.perspective, limit) /
-                         max(lookup.texelWorld, 1e-30);
+    float filterTexels = gsSoftRadiusTexels(lookup, receiver, gsMsmSoftDistance(lookup, blockerDepth), limit);
     if (fraction > 0.999 && filterTexels <= searchTexels) {
         return gsShadowResult(0.0, blockerDepth, lookup); // the whole light hidden
     }

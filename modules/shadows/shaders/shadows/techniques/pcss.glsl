@@ -32,9 +32,8 @@ GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
     float receiver = gsShadowDistance(lookup, lookup.depth);
     float nearest = gsShadowDistance(lookup, 0.0);
     // The widest radius searched or filtered, texels (softReachTexels: maps and pages keep that margin).
-    float limit = gsShadowTechniqueParameters.x * lookup.texelWorld;
-    float searchTexels = gsPcssRadius(receiver, nearest, lookup.lightSize, lookup.perspective, limit) /
-                         max(lookup.texelWorld, 1e-30);
+    float limit = gsShadowTechniqueParameters.x;
+    float searchTexels = gsSoftRadiusTexels(lookup, receiver, nearest, limit);
     if (searchTexels < 0.5) {
         // A light of no size (or a receiver at the map's near plane): one comparison, a hard shadow.
         vec2 centre = floor(lookup.texel) + 0.5;
@@ -62,8 +61,7 @@ GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
         return gsShadowResult(1.0, 1.0, lookup); // nothing between the receiver and any part of the light
     }
     float blocker = gsShadowDistance(lookup, blockerSum / float(blockers));
-    float filterTexels = gsPcssRadius(receiver, blocker, lookup.lightSize, lookup.perspective, limit) /
-                         max(lookup.texelWorld, 1e-30);
+    float filterTexels = gsSoftRadiusTexels(lookup, receiver, blocker, limit);
     if (blockers == GS_PCSS_SEARCH_TAPS && filterTexels <= searchTexels) {
         return gsShadowResult(0.0, blockerSum / float(blockers), lookup); // the whole light hidden
     }
