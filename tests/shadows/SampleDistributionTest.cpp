@@ -187,3 +187,39 @@ TEST(SampleDistributionTest, NoSamplesOrNonFiniteOnesGiveNoMap) {
     // A single sample: a tiny but valid map.
     EXPECT_TRUE(fitToSamples(direction, rect({1, 2, 3}, {1, 2, 3}), {}, 1024, 2.0f, true).valid);
 }
+
+TEST(SampleDistributionTest, ASoftMarginHoldsTheLightsWidestPenumbraUpToAnEighthOfTheMap) {
+    const glm::vec3 direction = glm::normalize(glm::vec3(0.3f, -0.4f, -0.8f));
+    // Samples 2 m across and 10 m deep in light space, no caster above them: the widest penumbra is cast from
+    // their top onto their bottom.
+    const LightRect samples = rect({0.0f, 0.0f, -10.0f}, {2.0f, 2.0f, 0.0f});
+    const float hard = 3.0f;
+    const LightProjection narrow = fitToSamples(direction, samples, {}, 1024, hard + 64.0f, false);
+    // No widening asked for: the same map as the margin in texels.
+    const LightProjection same = fitToSamples(direction, samples, {}, 1024, hard, false, {64.0f, 0.0f});
+    EXPECT_EQ(same.texelScale, narrow.texelScale);
+    EXPECT_EQ(same.softReachTexels, 64.0f);
+    // A penumbra of 0.01 m per metre behind its blocker: 0.1 m, about 60 texels of 2 m over 1024 - no wider
+    // than the margin's floor of 64.
+    EXPECT_EQ(fitToSamples(direction, samples, {}, 1024, hard, false, {64.0f, 0.01f}).softReachTexels, 64.0f);
+    // 0.03 m per metre: 0.3 m, wider than 64 texels; the map's reach holds it in world units.
+    const LightProjection wide = fitToSamples(direction, samples, {}, 1024, hard, false, {64.0f, 0.03f});
+    ASSERT_TRUE(wide.valid);
+    EXPECT_GT(wide.softReachTexels, 64.0f);
+    EXPECT_GE(wide.softReachTexels * wide.texelScale, 0.3f);
+    EXPECT_LE(wide.softReachTexels * wide.texelScale, 0.3f * 1.25f); // counted in the narrower map's texels
+    // The map holds the samples and that margin: its side is the samples', two margins and the slack.
+    EXPECT_NEAR(wide.texelScale * 1024.0f,
+                2.0f + 2.0f * (hard + wide.softReachTexels + 1.0f) * wide.texelScale, 1e-3f);
+    // A penumbra wider than an eighth of the map stops there; a non-finite size widens nothing.
+    EXPECT_EQ(fitToSamples(direction, samples, {}, 1024, hard, false, {64.0f, 10.0f}).softReachTexels,
+              128.0f);
+    EXPECT_EQ(fitToSamples(direction, samples, {}, 1024, hard, false,
+                           {64.0f, std::numeric_limits<float>::infinity()})
+                  .softReachTexels,
+              64.0f);
+    EXPECT_EQ(fitToSamples(direction, samples, {}, 1024, hard, false,
+                           {64.0f, std::numeric_limits<float>::quiet_NaN()})
+                  .softReachTexels,
+              64.0f);
+}

@@ -20,11 +20,19 @@ std::size_t FittedShadowMaps::bytes() const {
 }
 
 float FittedShadowMaps::kernelReach(const engine::FrameLight& light) const {
+    const SoftMargin soft = softMargin(light);
+    return plan_.kernelReachTexels - plan_.softReachTexels + soft.texels;
+}
+
+SoftMargin FittedShadowMaps::softMargin(const engine::FrameLight& light) const {
     // A light of no size casts hard shadows whatever the technique: its maps need no soft margin.
-    const float size =
-        light.light.type == engine::LightType::Directional ? light.light.angularDiameter : light.light.radius;
-    return size * settings_.lightSizeScale > 0.0f ? plan_.kernelReachTexels
-                                                  : plan_.kernelReachTexels - plan_.softReachTexels;
+    const float size = softLightSize(light.light, settings_.lightSizeScale);
+    if (!(size > 0.0f)) {
+        return {};
+    }
+    const bool follows =
+        plan_.traits->softReachFollowsLight && light.light.type == engine::LightType::Directional;
+    return {plan_.softReachTexels, follows ? size : 0.0f};
 }
 
 bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
@@ -55,7 +63,8 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     const auto fitted = [&](int cascade) {
         return fitToSamples(light.direction,
                             slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], frame.boxes,
-                            resolution, kernelReach(light), settings_.texelSnapping);
+                            resolution, plan_.kernelReachTexels - plan_.softReachTexels,
+                            settings_.texelSnapping, softMargin(light));
     };
     if (count == 1) {
         maps.slots.x = addSlot(slots, light.index, fitted(0), resolution);

@@ -35,6 +35,9 @@ private:
     /// @brief How far, texels, the kernels read beyond a map of `light`: the plan's, less the soft margin for
     /// a light of no size.
     [[nodiscard]] float kernelReach(const engine::FrameLight& light) const;
+    /// @brief The soft part of that reach: none for a light of no size; for a directional light of a
+    /// technique that follows it (softReachFollowsLight), as wide as its penumbrae over the map's depth.
+    [[nodiscard]] SoftMargin softMargin(const engine::FrameLight& light) const;
     /// Fits directional light `light`'s maps to the visible samples into `maps` and `slots`; false, having
     /// added nothing, when the view has no sample.
     bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,

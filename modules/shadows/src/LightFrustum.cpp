@@ -359,7 +359,7 @@ glm::mat4 lightView(const glm::vec3& direction) {
 
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
-                             bool snapToTexels) {
+                             bool snapToTexels, SoftMargin soft) {
     LightProjection result;
     const glm::vec3 size = samples.max - samples.min;
     if (samples.empty() || resolution < 16 || !(size.x >= 0.0f && size.y >= 0.0f && size.z >= 0.0f) ||
@@ -367,24 +367,43 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
         return result;
     }
     result.view = lightRotation(direction);
+    // The nearest caster (towards the light) over a square of side `extent` around `centre`.
+    const auto nearestCaster = [&](float extent, glm::vec2 centre) {
+        const glm::vec2 half(0.5f * extent);
+        float nearest = samples.max.z;
+        for (const Aabb& box : boxes) {
+            if (const std::optional<glm::vec2> span =
+                    depthSpanOver(box, result.view, centre - half, centre + half)) {
+                nearest = std::max(nearest, span->y);
+            }
+        }
+        return nearest;
+    };
+    const float samplesExtent = std::max({size.x, size.y, 1e-6f * std::max(glm::length(samples.max), 1.0f)});
+    glm::vec2 centre = 0.5f * (glm::vec2(samples.min) + glm::vec2(samples.max));
+    // The soft margin: the widest penumbra over the samples, in texels of a map fitted without it (the final
+    // texel is no smaller, so that many of its texels hold the penumbra).
+    const float hardMargin = std::max(marginTexels, 0.0f);
+    float softTexels = std::max(soft.texels, 0.0f);
+    if (soft.perDepth > 0.0f && std::isfinite(soft.perDepth)) {
+        const float texel =
+            samplesExtent /
+            std::max(static_cast<float>(resolution) - 2.0f * (hardMargin + softTexels + 1.0f), 1.0f);
+        const float widest = soft.perDepth * (nearestCaster(samplesExtent, centre) - samples.min.z) / texel;
+        if (std::isfinite(widest)) {
+            softTexels = std::max(softTexels, std::min(widest, 0.125f * static_cast<float>(resolution)));
+        }
+    }
+    result.softReachTexels = softTexels;
     // The samples, their kernels' reach and a texel of slack for the snapped origin inside the map: the texel
     // follows from fitting that many texels fewer than the resolution across the samples' box.
-    const float slack = std::max(marginTexels, 0.0f) + 1.0f;
-    const float samplesExtent = std::max({size.x, size.y, 1e-6f * std::max(glm::length(samples.max), 1.0f)});
+    const float slack = hardMargin + softTexels + 1.0f;
     float extent = samplesExtent * static_cast<float>(resolution) /
                    std::max(static_cast<float>(resolution) - 2.0f * slack, 1.0f);
-    glm::vec2 centre = 0.5f * (glm::vec2(samples.min) + glm::vec2(samples.max));
     if (snapToTexels) {
         snapSquare(extent, centre, resolution);
     }
-    const glm::vec2 half(0.5f * extent);
-    float nearest = samples.max.z; // towards the light
-    for (const Aabb& box : boxes) {
-        if (const std::optional<glm::vec2> span =
-                depthSpanOver(box, result.view, centre - half, centre + half)) {
-            nearest = std::max(nearest, span->y);
-        }
-    }
+    float nearest = nearestCaster(extent, centre);
     float farthest = samples.min.z;
     const float span = std::max(nearest - farthest, 1e-6f * std::max(std::abs(nearest), 1.0f));
     float depthMargin = 0.01f * span;

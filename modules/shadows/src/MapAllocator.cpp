@@ -3,7 +3,17 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace shadows {
+
+float softLightSize(const engine::LightComponent& light, float lightSizeScale) {
+    return light.type == engine::LightType::Directional
+               ? std::tan(0.5f * std::min(lightSizeScale * light.angularDiameter,
+                                          engine::LightComponent::kMaxAngularDiameter))
+               : lightSizeScale * light.radius;
+}
 
 int addSlot(std::vector<MapSlot>& slots, int lightIndex, const LightProjection& projection, int resolution) {
     if (!projection.valid || slots.size() == static_cast<std::size_t>(kMaxMaps)) {

@@ -76,6 +76,11 @@ public:
     [[nodiscard]] virtual VirtualPageStats pageStats() const { return {}; }
 };
 
+/// @brief The light's size as the soft techniques take it, scaled by `lightSizeScale`: a sun's by the tangent
+/// of its angular radius (a penumbra's radius per unit of distance behind its blocker; the diameter kept
+/// below 90°), a local light's by its radius.
+float softLightSize(const engine::LightComponent& light, float lightSizeScale);
+
 /// @brief Appends a slot for a valid `projection` of light `lightIndex` with `resolution` texels per side;
 /// its index, or -1 when the projection has nothing to draw or all kMaxMaps slots are taken.
 int addSlot(std::vector<MapSlot>& slots, int lightIndex, const LightProjection& projection, int resolution);

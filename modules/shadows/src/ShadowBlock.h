@@ -85,6 +85,9 @@ struct alignas(16) ShadowBlock {
     alignas(16) glm::ivec4 virtualPages;
     /// Virtual maps: x page side, y tile side, z border in texels, w 1 / atlas side.
     alignas(16) glm::vec4 virtualPage;
+    /// The soft techniques' widest penumbra radius in each map, texels, four maps a vector: the plan's reach,
+    /// or the wider one the map's fit holds (LightProjection::softReachTexels).
+    glm::vec4 softReachTexels[kMaxMaps / 4];
 };
 
 static_assert(offsetof(ShadowBlock, texel) == 64 * kMaxMaps);
@@ -103,5 +106,7 @@ static_assert(offsetof(ShadowBlock, depthBiasFloor) == offsetof(ShadowBlock, cas
 static_assert(offsetof(ShadowBlock, virtualPages) % 16 == 0 &&
               offsetof(ShadowBlock, virtualPages) - offsetof(ShadowBlock, depthBiasFloor) <= 16);
 static_assert(offsetof(ShadowBlock, virtualPage) == offsetof(ShadowBlock, virtualPages) + 16);
+static_assert(kMaxMaps % 4 == 0 &&
+              offsetof(ShadowBlock, softReachTexels) == offsetof(ShadowBlock, virtualPage) + 16);
 
 } // namespace shadows

@@ -352,20 +352,15 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
         block.worldToShadow[slot] = projection.worldToShadow;
         block.texel[slot] = glm::vec4(resolution, 1.0f / resolution, projection.texelScale,
                                       projection.perspective ? 1.0f : 0.0f);
-        // The light's size as the soft techniques take it, scaled by lightSizeScale: a sun's by the tangent
-        // of its angular radius (the penumbra's half-width per unit of distance behind its blocker; the
-        // diameter kept below 90°), a local light's by its radius.
         float size = 0.0f;
         for (const engine::FrameLight& light : frameLights) {
             if (light.index == slots_[slot].lightIndex) {
-                const float scale = settings_.lightSizeScale;
-                size = light.light.type == engine::LightType::Directional
-                           ? std::tan(0.5f * std::min(scale * light.light.angularDiameter,
-                                                      engine::LightComponent::kMaxAngularDiameter))
-                           : scale * light.light.radius;
+                size = softLightSize(light.light, settings_.lightSizeScale);
             }
         }
         block.depthRange[slot] = glm::vec4(projection.depthRange, projection.litBorderTexels, size);
+        block.softReachTexels[slot / 4][static_cast<int>(slot % 4)] =
+            std::max(projection.softReachTexels, plan_.softReachTexels);
     }
     std::copy(lights.begin(), lights.end(), block.lights);
     // View depth is -z in view space: minus the view matrix's third row.

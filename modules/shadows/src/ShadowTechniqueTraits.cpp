@@ -39,11 +39,6 @@ float bilinearReach(const ShadowSettings&) {
     return kBilinearReach;
 }
 
-/// The soft techniques' reach, texels, for the shader (gsShadowTechniqueParameters.x).
-glm::vec4 softReachParameters(const ShadowSettings& settings) {
-    return glm::vec4(softReachTexels(settings), 0.0f, 0.0f, 0.0f);
-}
-
 /// msm-soft's widest radius, texels, for the shader (gsShadowTechniqueParameters.x).
 glm::vec4 momentSoftParameters(const ShadowSettings& settings) {
     return glm::vec4(momentSoftRadiusLimit(settings), 0.0f, 0.0f, 0.0f);
@@ -275,15 +270,17 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
          "of comparisons) on Vogel disks turned per pixel by interleaved gradient noise, every tap "
          "compared at the receiver's tangent plane; the search and the penumbra from the light's own size "
          "(a sun's angular diameter, a local light's radius) in world units, converted per map, cascade "
-         "and page, up to 64 texels (16 on virtual pages); no blocker found: lit, every tap a blocker: "
+         "and page, up to 64 texels (16 on virtual pages), on a directional map fitted to the view as far as "
+         "the light's penumbra reaches over its depth range (up to an eighth of its side); no blocker found: "
+         "lit, every tap a blocker: "
          "shadowed; a light of size 0: one comparison",
      .reference = "Fernando, SIGGRAPH 2005 sketch",
      .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCSS", "GS_SHADOW_TANGENT_PLANE"},
-     .shaderParameters = softReachParameters,
      .footprintTexels = bilinearReach,
      .biasesDepth = true,
-     .softReachTexels = softReachTexels},
+     .softReachTexels = softReachTexels,
+     .softReachFollowsLight = true},
     {.technique = T::PcssScreenPlane,
      .name = "pcss-screen-plane",
      .summary =
@@ -293,11 +290,11 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .reference = "Fernando 2005; receiver plane: bias reference, \"Receiver Plane Depth Bias\"",
      .sampler = Sampler::DepthLinear,
      .defines = {"GS_SHADOW_PCSS_SCREEN_PLANE", "GS_SHADOW_GRADIENT_SCREEN"},
-     .shaderParameters = softReachParameters,
      .footprintTexels = bilinearReach,
      .biasesDepth = true,
      .naive = true,
-     .softReachTexels = softReachTexels},
+     .softReachTexels = softReachTexels,
+     .softReachFollowsLight = true},
     {.technique = T::MsmSoft,
      .name = "msm-soft",
      .summary =

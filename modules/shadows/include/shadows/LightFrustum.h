@@ -38,6 +38,9 @@ struct LightProjection {
     /// no kernel, fit or central difference straddles the map's edge. Zero for cascades, spot maps and cube
     /// faces, whose edges shadows may reach.
     float litBorderTexels = 0.0f;
+    /// The widest penumbra radius, in texels, the margin of a map fitted with a SoftMargin holds beyond the
+    /// technique's own reach (ShadowPlan::softReachTexels, which every map keeps); zero for other maps.
+    float softReachTexels = 0.0f;
     /// False when nothing visible can receive a shadow from this light (no map needs drawing).
     bool valid = false;
 };
@@ -115,9 +118,22 @@ Sphere frustumSliceSphere(const glm::mat4& projection, float sliceNear, float sl
 LightProjection fitCascade(const glm::vec3& direction, const FitView& view, float sliceNear, float sliceFar,
                            std::span<const Aabb> boxes, int resolution, bool snapToTexels);
 
+/// @brief The margin a soft technique's penumbrae need around a directional map's samples: at least `texels`,
+/// and as wide as the penumbra a blocker at the map's nearest caster casts on its deepest sample, `perDepth`
+/// world units of radius per unit of depth between them (a sun's tan of its angular radius; 0: `texels`
+/// alone). The widening stops at an eighth of the map's side, so the margin takes at most a quarter of its
+/// texels.
+struct SoftMargin {
+    /// The narrowest soft margin, texels (ShadowPlan::softReachTexels; 0 for a light of no size).
+    float texels = 0.0f;
+    /// Penumbra radius per unit of depth behind its blocker, world units (0: `texels` alone).
+    float perDepth = 0.0f;
+};
+
 /// @brief Fits the orthographic map of a directional light shining along `direction` to the visible samples
 /// it must hold: their light-space box `samples` (x, y in the frame of lightView(direction); z towards the
-/// light), widened by `marginTexels` texels (the lookups' kernel reach) and a texel of snapping slack. With
+/// light), widened by `marginTexels` texels (the lookups' kernel reach), the soft margin `soft` (the map's
+/// softReachTexels: what it holds beyond soft.texels) and a texel of snapping slack. With
 /// `snapToTexels` its extent is quantised to 1/8-octave steps and its origin to whole texels, and its depth
 /// range to steps of an eighth of an octave of its span, so a moving camera changes it rarely (SDSM's known
 /// weakness is flashing as the fit follows the samples). Depth: from the deepest sample to the nearest caster
@@ -126,7 +142,7 @@ LightProjection fitCascade(const glm::vec3& direction, const FitView& view, floa
 /// `samples` is empty or not finite.
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
-                             bool snapToTexels);
+                             bool snapToTexels, SoftMargin soft = {});
 
 /// @brief Where a directional light shining along `direction` can shadow a receiver in the view of
 /// `cameraViewProjection`, as a light-space (lightView) xy box (z = 0): the part of each box the view can see

@@ -114,6 +114,9 @@ struct ShadowTechniqueTraits {
     /// Texels beyond the receiver its kernel may read besides a tap pattern's (a soft shadow's widest
     /// penumbra) for these settings: maps keep that margin, and virtual pages that border; null for none.
     float (*softReachTexels)(const ShadowSettings&) = nullptr;
+    /// Reads each map's own reach (gsShadowSoftReach): a directional map fitted to the samples widens its
+    /// margin to the light's widest penumbra over its depth range (SoftMargin), beyond softReachTexels.
+    bool softReachFollowsLight = false;
 };
 
 /// @brief Map reads of the soft techniques' lookup at most: the blocker search's taps, then the filter's
@@ -139,8 +142,9 @@ float momentSoftReachTexels(const ShadowSettings& settings);
 /// moments' mip chain ends at its level.
 float momentSoftRadiusLimit(const ShadowSettings& settings);
 
-/// @brief The widest penumbra radius, in texels, the soft techniques search and filter over: a virtual page's
-/// texel spans about a pixel, so 16 (its border holds them); a whole map's may be far finer, so 64.
+/// @brief The widest penumbra radius, in texels, the soft techniques search and filter over at least: a
+/// virtual page's texel spans about a pixel, so 16 (its border holds them); a whole map's may be far finer,
+/// so 64, and a directional map fitted to the samples as far as its light's penumbra reaches (SoftMargin).
 float softReachTexels(const ShadowSettings& settings);
 
 /// @brief Whether `technique` stores msm's four moments (msmMomentBias applies).

@@ -49,5 +49,6 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     float gsShadowDepthBiasFloor;               // the depth bias's arithmetic floor, orthographic depth units
     ivec4 gsVirtualPages; // x pages per side of a level, y atlas tiles per row, z atlas side (texels)
     vec4 gsVirtualPage;   // x page side, y tile side, z border (texels), w 1 / atlas side
+    vec4 gsShadowSoftReachTexels[GS_SHADOW_MAX_MAPS / 4]; // the soft techniques' widest radius per map, four a vector
 };
 

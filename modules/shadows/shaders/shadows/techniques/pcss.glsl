@@ -31,8 +31,9 @@ float gsPcssTap(GsShadowLookup lookup, vec2 texel) {
 GsShadowSample gsShadowSample_Pcss(GsShadowLookup lookup) {
     float receiver = gsShadowDistance(lookup, lookup.depth);
     float nearest = gsShadowDistance(lookup, 0.0);
-    // The widest radius searched or filtered, texels (softReachTexels: maps and pages keep that margin).
-    float limit = gsShadowTechniqueParameters.x;
+    // The widest radius searched or filtered, texels: the margin this map or page keeps (softReachTexels, or
+    // the wider one a directional map's fit holds for its light's penumbrae).
+    float limit = gsShadowSoftReachTexels[lookup.slot / 4][lookup.slot % 4];
     float searchTexels = gsSoftRadiusTexels(lookup, receiver, nearest, limit);
     if (searchTexels < 0.5) {
         // A light of no size (or a receiver at the map's near plane): one comparison, a hard shadow.
