@@ -94,8 +94,9 @@ VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& fr
     }
     const glm::mat4 viewProjection = fit.projection * fit.view;
 
-    // 8x8 invocations a group, each reducing a 4x4 block of texels (samples.comp).
-    const glm::ivec2 groups = (size_ + glm::ivec2(31)) / 32;
+    // 8x8 invocations a group, each reducing a 16x16 block of texels (samples.comp's GS_BLOCK).
+    constexpr int kGroupTexels = 8 * 16;
+    const glm::ivec2 groups = (size_ + glm::ivec2(kGroupTexels - 1)) / kGroupTexels;
     const glm::mat4 clipToWorld = glm::inverse(viewProjection);
     std::array<std::uint32_t, kBoundsWords> words = clearedBounds();
     const auto run = [&](const engine::gl::Program& program) {

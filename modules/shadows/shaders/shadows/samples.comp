@@ -46,9 +46,10 @@ bool gsIsMinimumWord(int i) {
 #endif
 }
 
-// Each invocation reduces a block of GS_BLOCK x GS_BLOCK texels in registers first: shared-memory atomics
-// are slow on a software rasteriser, and one set per block instead of per texel cut the pass 16-fold there.
-const int GS_BLOCK = 4;
+// Each invocation reduces a block of GS_BLOCK x GS_BLOCK texels in registers first: shared-memory atomics are
+// slow on a software rasteriser, and an invocation's set of them (seventy for the slices) costs as much as many
+// texels' arithmetic, so a block of 256 shares one set. VisibleSamples dispatches groups of 8x8 invocations.
+const int GS_BLOCK = 16;
 
 void main() {
     uint local = gl_LocalInvocationIndex;
