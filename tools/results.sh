@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only virtual|soft|cost] [work folder, default out/results]
+# Usage: bash tools/results.sh [--only virtual|soft|cost|sizing] [work folder, default out/results]
 # --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads), --only soft step 12, --only
-# cost step 10, and replaces only that step's section of docs/RESULTS.md ("Virtual maps", "Soft shadows", "Cost
-# model"), which then says so.
+# cost step 10, --only sizing step 13, and replaces only that step's section of docs/RESULTS.md ("Virtual maps",
+# "Soft shadows", "Cost model", "Maps sized to the view"), which then says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        virtual | soft | cost) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'virtual', 'soft' or 'cost'" >&2; exit 2 ;;
+        virtual | soft | cost | sizing) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'virtual', 'soft', 'cost' or 'sizing'" >&2; exit 2 ;;
     esac
     shift 2
 fi
@@ -202,6 +202,17 @@ if [ "${only[1]:-soft}" = soft ]; then
 "$bench" --scene soft-contact --scene soft-fence --techniques pcss --resolutions 2048 --soft 8 --accuracy-only \
     --config "pcss-4-cascades:technique=pcss,cascadeCount=4" \
     --config "msm-soft-4-cascades:technique=msm-soft,cascadeCount=4" --out "$work/soft-seams"
+fi
+
+if [ "${only[1]:-sizing}" = sizing ]; then
+# 13. Maps sized to the view: the default technique with its directional map sized to what the view resolves
+#     (fittedTexelPixels, the default) and at the full 2048² (fittedTexelPixels=0), timed, on the content scenes
+#     with a sun and every real model, 640x480.
+[ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
+"$bench" --scene knob --scene torus --scene spheres --scene suzanne --scene human-subdivided --scene fzk-haus \
+    --scene at-at --scene jeep --scene duck --scene wuson --scene epileptic --scene dwarf --scene cylinder-engine \
+    --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 7 \
+    --config "full-2048:fittedTexelPixels=0" --out "$work/sizing"
 fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).

@@ -232,6 +232,7 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     engine::RenderTarget shaded(options_.size);
     engine.renderFrame(scene.scene_, scene.camera_, shaded);
     result.shadowBytes = module.stats().bytes;
+    result.mapResolution = module.stats().mapResolution;
     result.shadowMaps = module.stats().shadowMaps;
     result.virtualMaps = module.stats().virtualMaps;
     if (result.virtualMaps) {
@@ -381,8 +382,8 @@ Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSett
             seamWidthJumps(options_.size, slots, *accuracy.soft); // clipmap levels' seams
         }
     } else {
-        accuracy.footprints =
-            texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps, settings.resolution);
+        accuracy.footprints = texelFootprints(options_.size, scene.positions_, scene.surfaces_, maps,
+                                              module.stats().mapResolution);
         if (accuracy.soft && maps.size() > 1) {
             // Cascades' (and cube faces') seams: where a penumbra crosses from one map to the next.
             const auto read = slotImage();
@@ -799,6 +800,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"naive", r.peerClass.empty() && shadows::traitsOf(r.config.settings.technique).naive},
              {"peerUnlitReceivers", r.peerUnlitReceivers},
              {"shadowBytes", r.shadowBytes},
+             {"mapResolution", r.mapResolution},
              {"mapReads", mapReadsPerLookup(r.config.settings)},
              {"fullKernelFraction", r.fullKernelFraction},
              {"shimmer", r.shimmer},

@@ -129,6 +129,7 @@ TEST(FilteredShadowsGLTest, ResourcesMatchTheTechnique) {
     engine::Engine engine;
     ShadowSettings settings;
     settings.resolution = 256;
+    settings.fittedTexelPixels = 0.0f; // maps of `resolution`, however little the 64x48 view needs
     settings.technique = ShadowTechnique::Msm;
     auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
     engine::RenderTarget target({64, 48});

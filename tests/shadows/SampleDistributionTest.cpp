@@ -223,3 +223,38 @@ TEST(SampleDistributionTest, ASoftMarginHoldsTheLightsWidestPenumbraUpToAnEighth
                   .softReachTexels,
               64.0f);
 }
+
+TEST(SampleDistributionTest, ViewResolutionIsTheSmallestPowerOfTwoWhoseTexelsTheViewResolves) {
+    // A 90° vertical field of view over 480 rows: a pixel spans 2 d / 480 at view depth d, 1/24 at d = 10, so
+    // a slice 10 wide starting there is 240 pixels across.
+    const glm::mat4 projection = glm::perspective(glm::radians(90.0f), 4.0f / 3.0f, 0.1f, 100.0f);
+    std::array<LightRect, kSampleSlices> rects{};
+    std::array<glm::vec2, kSampleSlices> depths{};
+    const auto single = static_cast<std::size_t>(sampleSliceIndex(1, 0));
+    rects[single] = rect({0.0f, 0.0f, -5.0f}, {10.0f, 4.0f, 0.0f});
+    depths[single] = {10.0f, 40.0f};
+    // Half a pixel a texel: 480 texels and two margins of 3 + 1 texels, so 512; a quarter: 968, so 1024.
+    EXPECT_EQ(viewResolution(rects, depths, 1, 2048, 3.0f, 0.5f, projection, 480), 512);
+    EXPECT_EQ(viewResolution(rects, depths, 1, 2048, 3.0f, 0.25f, projection, 480), 1024);
+    // Never above the setting's resolution; 0 (or a non-finite size) asks for the resolution itself.
+    EXPECT_EQ(viewResolution(rects, depths, 1, 256, 3.0f, 0.25f, projection, 480), 256);
+    EXPECT_EQ(viewResolution(rects, depths, 1, 2048, 3.0f, 0.0f, projection, 480), 2048);
+    EXPECT_EQ(viewResolution(rects, depths, 1, 2048, 3.0f, std::numeric_limits<float>::quiet_NaN(),
+                             projection, 480),
+              2048);
+    // A slice at the camera (a pixel of no size) cannot be resolved: the resolution.
+    depths[single].x = 0.0f;
+    EXPECT_EQ(viewResolution(rects, depths, 1, 2048, 3.0f, 0.5f, projection, 480), 2048);
+    // A tiny view still takes 64 texels (the margins fit); cascades take the side their finest needs, empty
+    // ones none.
+    depths[single].x = 10.0f;
+    EXPECT_EQ(viewResolution(rects, depths, 1, 2048, 3.0f, 0.5f, projection, 24), 64);
+    const auto nearCascade = static_cast<std::size_t>(sampleSliceIndex(2, 0));
+    const auto farCascade = static_cast<std::size_t>(sampleSliceIndex(2, 1));
+    rects[nearCascade] = rect({0.0f, 0.0f, -5.0f}, {2.5f, 1.0f, 0.0f}); // 60 px across at d = 10: 128
+    depths[nearCascade] = {10.0f, 20.0f};
+    depths[farCascade] = {20.0f, 40.0f}; // empty
+    EXPECT_EQ(viewResolution(rects, depths, 2, 2048, 3.0f, 0.5f, projection, 480), 128);
+    rects[farCascade] = rect({0.0f, 0.0f, -5.0f}, {40.0f, 8.0f, 0.0f}); // 480 px across at d = 20: 1024
+    EXPECT_EQ(viewResolution(rects, depths, 2, 2048, 3.0f, 0.5f, projection, 480), 1024);
+}

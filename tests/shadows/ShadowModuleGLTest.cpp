@@ -185,6 +185,47 @@ TEST(ShadowModuleGLTest, DebugViewsCompileAndDiffer) {
     }
 }
 
+TEST(ShadowModuleGLTest, ADirectionalMapTakesTheSideItsViewNeeds) {
+    glTestContext();
+    engine::Scene scene = testsupport::boxOnPlane(10.0f, 1.0f);
+    const auto camera = scene.create("camera");
+    scene.entity(camera).camera = engine::CameraComponent{};
+    scene.entity(camera).transform = engine::Transform::lookAt({0, 5, 6}, {0, 0, 0});
+    const auto sun = scene.create("sun");
+    scene.entity(sun).light = engine::LightComponent{};
+    scene.entity(sun).transform = engine::Transform::lookAt({-2, 5, 1}, {0, 0, 0});
+    engine::Engine engine;
+    ShadowSettings settings;
+    settings.cascadeCount = 1;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    const auto sideAt = [&](glm::ivec2 size) {
+        engine::RenderTarget target(size);
+        engine.renderFrame(scene, camera, target);
+        return module.stats().mapResolution;
+    };
+    // Texels of at most a quarter of a pixel where the view is nearest: a small view asks for a small map, a
+    // larger one for more, never beyond `resolution`, and the memory follows.
+    const int small = sideAt({64, 48});
+    const std::size_t smallBytes = module.stats().bytes;
+    const int large = sideAt({640, 480});
+    std::cout << "[ measured ] box on a plane: map " << small << "² at 64x48, " << large << "² at 640x480\n";
+    EXPECT_LT(small, large);
+    EXPECT_LE(large, settings.resolution);
+    EXPECT_EQ(smallBytes, static_cast<std::size_t>(small) * static_cast<std::size_t>(small) * 4u); // D24
+    EXPECT_EQ(small & (small - 1), 0) << "a power of two";
+    // 0 keeps `resolution`, as does a frame whose array also holds a spot light's map.
+    settings.fittedTexelPixels = 0.0f;
+    module.setSettings(settings);
+    EXPECT_EQ(sideAt({64, 48}), settings.resolution);
+    settings.fittedTexelPixels = ShadowSettings{}.fittedTexelPixels;
+    module.setSettings(settings);
+    const auto spot = scene.create("spot");
+    scene.entity(spot).light = engine::LightComponent{};
+    scene.entity(spot).light->type = engine::LightType::Spot;
+    scene.entity(spot).transform = engine::Transform::lookAt({2, 5, 1}, {0, 0, 0});
+    EXPECT_EQ(sideAt({64, 48}), settings.resolution);
+}
+
 TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     glTestContext();
     engine::Scene scene = testsupport::boxOnPlane(10.0f, 1.0f);
@@ -195,6 +236,7 @@ TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     engine::Engine engine;
     ShadowSettings settings;
     settings.resolution = 128;
+    settings.fittedTexelPixels = 0.0f; // maps of `resolution`, however little the 32x32 view needs
     settings.depthFormat = DepthFormat::D16;
     settings.technique = ShadowTechnique::HardCompare;
     auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));

@@ -290,7 +290,9 @@ int main(int argc, char** argv) {
                << "  \"shadowTechnique\": \""
                << (options.shadows ? shadows::toString(options.shadows->technique) : "none") << "\",\n"
                << "  \"shadowMaps\": " << (shadowModule ? shadowModule->stats().shadowMaps : 0) << ",\n"
-               << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n";
+               << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n"
+               << "  \"shadowMapResolution\": " << (shadowModule ? shadowModule->stats().mapResolution : 0)
+               << ",\n";
         if (shadowModule && shadowModule->stats().virtualMaps) {
             // The last timed frame's pages: a static view draws none once the first frame has.
             const shadows::VirtualPageStats pages = shadowModule->stats().pages;

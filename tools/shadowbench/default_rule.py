@@ -43,7 +43,8 @@ def meets_floor(r):
 def map_mib(r):
     """Shadow memory per map of a row, scaled to a 2048² map."""
     maps = max(r["shadowMaps"], 1)
-    return r["shadowBytes"] / maps / 2**20 * (2048 / r["settings"]["resolution"]) ** 2
+    side = r.get("mapResolution") or r["settings"]["resolution"]  # the map drawn (sized to the view)
+    return r["shadowBytes"] / maps / 2**20 * (2048 / side) ** 2
 
 
 def frame_ms(r):

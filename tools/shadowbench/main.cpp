@@ -379,8 +379,11 @@ int main(int argc, char** argv) {
                           << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px (p95 "
                           << m.edges.trueToRendered.percentile95 << "/" << m.edges.renderedToTrue.percentile95
                           << "), m<=1 " << m.density.atMostOnePixel << " (p99 " << m.density.percentile99
-                          << " px, p99.9 " << m.density.percentile999 << "), " << pagesText(results.back())
-                          << softText(results.back())
+                          << " px, p99.9 " << m.density.percentile999 << "), "
+                          << (results.back().mapResolution > 0
+                                  ? "map " + std::to_string(results.back().mapResolution) + "², "
+                                  : std::string())
+                          << pagesText(results.back()) << softText(results.back())
                           << (results.back().shimmer >= 0.0
                                   ? "shimmer " + std::to_string(results.back().shimmer) + ", "
                                   : std::string())

@@ -22,7 +22,7 @@ from default_rule import edges_scored, map_mib, meets_floor, recommend, scored  
 import cost_model  # noqa: E402
 
 work, results_md, plot_folder = (pathlib.Path(a) for a in sys.argv[1:4])
-if sys.argv[4:] not in ([], ["--only", "virtual"], ["--only", "soft"], ["--only", "cost"]):
+if sys.argv[4:] not in ([], ["--only", "virtual"], ["--only", "soft"], ["--only", "cost"], ["--only", "sizing"]):
     sys.exit(f"results.py: unknown options {' '.join(sys.argv[4:])} (usage: see its docstring)")
 partial = sys.argv[5] if len(sys.argv) > 5 else None
 plot_folder.mkdir(parents=True, exist_ok=True)
@@ -875,7 +875,50 @@ def soft_section(soft, coarse, seams):
     out.append("\n".join(lines) + "\n")
 
 
-PARTIAL_SECTIONS = {"virtual": "## Virtual maps", "soft": "## Soft shadows", "cost": "## Cost model"}
+PARTIAL_SECTIONS = {"virtual": "## Virtual maps", "soft": "## Soft shadows", "cost": "## Cost model",
+                    "sizing": "## Maps sized to the view"}
+
+
+def sizing_section(sizing):
+    """The default technique's directional map sized to the view against the full resolution, per scene."""
+    rows = [r for r in sizing["results"] if not r["peer"]]
+    full = {r["scene"]: r for r in rows if r["label"].startswith("full-")}
+    sized = {r["scene"]: r for r in rows if not r["label"].startswith("full-")}
+    first = next(iter(sized.values()))
+    resolution = next(iter(full.values()))["settings"]["resolution"]
+    out.append("## Maps sized to the view\n")
+    out.append(f"The default `{first['settings']['technique']}` on every scene with a sun, "
+               f"{sizing['width']}x{sizing['height']}: its directional map sized to what the view resolves "
+               f"(`fittedTexelPixels` {first['settings']['fittedTexelPixels']:g}, the default: a texel of at most "
+               "that many pixels at each cascade's nearest sample, the smallest power of two up to `resolution`; "
+               f"docs/SHADOWS.md, \"Every light\") against the full {resolution}² (`fittedTexelPixels` 0). Times "
+               "are medians of the shadow pass (the sample pass included) and of the whole frame, "
+               f"{sizing['timingMethod']}, both configurations in one run; edges and m ≤ 1 as in \"Defaults\" "
+               "(texel density from the map drawn).\n")
+    lines = ["| scene | map side | cascades | shadow pass ms | frame ms | edges true→rendered mean / p95 px | "
+             "edges rendered→true mean / p95 px | m ≤ 1 | acne / leak | memory |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+
+    def pair(f, v, key, fmt):
+        return f"{fmt(key(f))} → {fmt(key(v))}"
+
+    def edge_pair(f, v, way):
+        a, b = f["edges"][way], v["edges"][way]
+        return f"{a['mean']:.2f} / {a['p95']:.1f} → {b['mean']:.2f} / {b['p95']:.1f}"
+
+    for scene, f in full.items():
+        v = sized.get(scene)
+        if not v:
+            continue
+        density = lambda r: (r.get("density") or {}).get("atMostOnePixel", -1)  # noqa: E731
+        lines.append(f"| {scene} | {f['mapResolution']} → {v['mapResolution']} | {v['shadowMaps']} | "
+                     f"{pair(f, v, lambda r: r['shadowPassMs']['median'], lambda x: f'{x:.1f}')} | "
+                     f"{pair(f, v, frame_ms, lambda x: f'{x:.1f}')} | "
+                     f"{edge_pair(f, v, 'trueToRendered')} | {edge_pair(f, v, 'renderedToTrue')} | "
+                     f"{pair(f, v, density, lambda x: f'{100 * x:.0f} %')} | "
+                     f"{100 * v['acneRate']:.3f} / {100 * v['leakRate']:.3f} % | "
+                     f"{pair(f, v, lambda r: r['shadowBytes'] / 2**20, lambda x: f'{x:.0f} MiB')} |")
+    out.append("\n".join(lines) + "\n")
 
 
 def splice(heading, sections, renderer, option):
@@ -905,6 +948,11 @@ if partial == "soft":
     soft_section(soft, load("soft-coarse"), load("soft-seams"))
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, soft["renderer"], partial))
     sys.exit(0)
+if partial == "sizing":
+    sizing = load("sizing")
+    sizing_section(sizing)
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, sizing["renderer"], partial))
+    sys.exit(0)
 if partial == "cost":
     costs = load("cost-model")
     nir_path = work / "cost-model" / "nir-counts.json"
@@ -929,6 +977,8 @@ if (work / "virtual" / "results.json").exists():
         virtual_lights_section(load("virtual-lights"))
 if (work / "soft" / "results.json").exists():
     soft_section(load("soft"), load("soft-coarse"), load("soft-seams"))
+if (work / "sizing" / "results.json").exists():
+    sizing_section(load("sizing"))
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))

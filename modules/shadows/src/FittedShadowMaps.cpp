@@ -4,6 +4,7 @@
 
 #include <engine/ForwardRenderer.h>
 
+#include <algorithm>
 #include <array>
 #include <iostream>
 
@@ -55,16 +56,22 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     for (std::size_t s = 0; s < slices.size(); ++s) {
         slices[s] = clippedTo(bounds->slices[s], shadowable);
     }
-    const int resolution = settings_.resolution;
     const int count = settings_.cascadeCount > 0
                           ? settings_.cascadeCount
-                          : densityCascadeCount(slices, bounds->sliceDepths, resolution, frame.fit.projection,
-                                                frame.frame.target.size.y);
+                          : densityCascadeCount(slices, bounds->sliceDepths, settings_.resolution,
+                                                frame.fit.projection, frame.frame.target.size.y);
+    const float hardMargin = plan_.kernelReachTexels - plan_.softReachTexels;
+    const int resolution =
+        viewSizedMaps_
+            ? viewResolution(slices, bounds->sliceDepths, count, settings_.resolution,
+                             hardMargin + softMargin(light).texels,
+                             settings_.fittedTexelPixels / (1.0f + 2.0f * plan_.filterRadiusTexels),
+                             frame.fit.projection, frame.frame.target.size.y)
+            : settings_.resolution;
     const auto fitted = [&](int cascade) {
         return fitToSamples(light.direction,
                             slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], frame.boxes,
-                            resolution, plan_.kernelReachTexels - plan_.softReachTexels,
-                            settings_.texelSnapping, softMargin(light));
+                            resolution, hardMargin, settings_.texelSnapping, softMargin(light));
     };
     if (count == 1) {
         maps.slots.x = addSlot(slots, light.index, fitted(0), resolution);
@@ -120,6 +127,17 @@ void FittedShadowMaps::fitToBounds(const AllocationFrame& frame, const engine::F
 
 void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
                                 std::vector<LightMapsBlock>& lights) {
+    // The maps share one array, so one light's view may size them: a frame whose only shadowed light is
+    // directional. Spot and point maps, and a second sun's, keep `resolution`; so do the soft techniques,
+    // whose margin of 64 texels and more would take a quarter of a 512² map.
+    const auto casters =
+        std::count_if(frame.frame.lights.begin(), frame.frame.lights.end(),
+                      [](const engine::FrameLight& light) { return light.light.castsShadows; });
+    viewSizedMaps_ =
+        settings_.fittedTexelPixels > 0.0f && plan_.softReachTexels == 0.0f && casters == 1 &&
+        std::any_of(frame.frame.lights.begin(), frame.frame.lights.end(), [](const auto& light) {
+            return light.light.castsShadows && light.light.type == engine::LightType::Directional;
+        });
     const int resolution = settings_.resolution;
     // Where the receivers in view lie in depth: the cascades' range, and their automatic count.
     const std::optional<glm::vec2> visibleRange = visibleDepthRange(frame.fit, frame.boxes);
@@ -157,9 +175,15 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
     }
     if (slots.empty()) {
         maps_.reset(); // nothing casts this frame: give the memory back
-    } else if (!maps_ || maps_->layers() != static_cast<int>(slots.size())) {
-        // The arrays hold exactly the maps in use; a change in their number reallocates them.
-        maps_ = std::make_unique<ShadowMapArray>(resolution, static_cast<int>(slots.size()), plan_);
+    } else {
+        // The arrays hold exactly the maps in use, at the side the frame's fits took; a change in either
+        // reallocates them.
+        const int side = std::max_element(slots.begin(), slots.end(), [](const MapSlot& a, const MapSlot& b) {
+                             return a.resolution < b.resolution;
+                         })->resolution;
+        if (!maps_ || maps_->layers() != static_cast<int>(slots.size()) || maps_->depth.size().x != side) {
+            maps_ = std::make_unique<ShadowMapArray>(side, static_cast<int>(slots.size()), plan_);
+        }
     }
 }
 
@@ -169,7 +193,7 @@ void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Prog
         const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
         const LightProjection& projection = slots[layer].projection;
         framebuffer.bind();
-        glViewport(0, 0, settings_.resolution, settings_.resolution);
+        glViewport(0, 0, maps_->depth.size().x, maps_->depth.size().y);
         clearMapTargets(*maps_, framebuffer.id(), plan_);
         drawCasters(host_, scene, program, projection);
     }

@@ -53,6 +53,8 @@ private:
     VisibleSamples& samples_;
     OnceWarnings& warnings_;
     std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
+    // This frame's directional maps take the side their view needs (ShadowSettings::fittedTexelPixels).
+    bool viewSizedMaps_ = false;
 };
 
 } // namespace shadows

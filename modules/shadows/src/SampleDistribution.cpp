@@ -112,6 +112,30 @@ float sliceTexelsPerPixel(const LightRect& rect, float viewDepth, int resolution
     return pixel > 0.0f ? texel / pixel : std::numeric_limits<float>::infinity();
 }
 
+int viewResolution(const std::array<LightRect, kSampleSlices>& rects,
+                   const std::array<glm::vec2, kSampleSlices>& sliceDepths, int count, int resolution,
+                   float marginTexels, float texelPixels, const glm::mat4& projection, int imageHeight) {
+    if (!(texelPixels > 0.0f) || !std::isfinite(texelPixels)) {
+        return resolution;
+    }
+    float texelsAcross = 0.0f;
+    for (int cascade = 0; cascade < count; ++cascade) {
+        const auto s = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
+        // sliceTexelsPerPixel at one texel across the rect is the rect's extent in pixels.
+        const float pixels = sliceTexelsPerPixel(rects[s], sliceDepths[s].x, 1, projection, imageHeight);
+        if (!std::isfinite(pixels)) {
+            return resolution;
+        }
+        texelsAcross = std::max(texelsAcross, pixels / texelPixels);
+    }
+    const float needed = texelsAcross + 2.0f * (std::max(marginTexels, 0.0f) + 1.0f);
+    int side = std::min(64, resolution);
+    while (side < resolution && static_cast<float>(side) < needed) {
+        side *= 2;
+    }
+    return std::min(side, resolution);
+}
+
 int densityCascadeCount(const std::array<LightRect, kSampleSlices>& rects,
                         const std::array<glm::vec2, kSampleSlices>& sliceDepths, int resolution,
                         const glm::mat4& projection, int imageHeight) {

@@ -76,6 +76,8 @@ ShadowStats ShadowModule::stats() const {
         stats.virtualMaps = allocation_->servedVirtualMaps();
         if (stats.virtualMaps) {
             stats.pages = allocation_->pageStats();
+        } else if (!slots_.empty()) {
+            stats.mapResolution = slots_.front().resolution; // one array holds every map, at one side
         }
     }
     return stats;

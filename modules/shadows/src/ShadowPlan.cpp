@@ -139,9 +139,11 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     plan.needsJitterTexture = plan.traits->jittered;
     // Two texels cover a bilinear footprint and central differences around any tap.
     plan.softReachTexels = plan.traits->softReachTexels ? plan.traits->softReachTexels(settings) : 0.0f;
-    plan.kernelReachTexels = 2.0f + plan.softReachTexels +
-                             (plan.usesTapPattern || plan.traits->jittered ? settings.pcfRadius : 0.0f) +
-                             (plan.momentsFormat != 0 ? static_cast<float>(settings.momentBlurRadius) : 0.0f);
+    const float taps = plan.usesTapPattern || plan.traits->jittered ? settings.pcfRadius : 0.0f;
+    const float blur = plan.momentsFormat != 0 ? static_cast<float>(settings.momentBlurRadius) : 0.0f;
+    plan.kernelReachTexels = 2.0f + plan.softReachTexels + taps + blur;
+    // A bilinear lookup (a hardware 2x2 comparison, filtered depth or moments) blurs an edge over two texels.
+    plan.filterRadiusTexels = taps + blur + (plan.sampler == MapSampler::CompareNearest ? 0.0f : 0.5f);
     return plan;
 }
 

@@ -77,6 +77,10 @@ bool jittered(const S& s) {
 bool virtualMaps(const S& s) {
     return s.mapAllocation == MapAllocation::Virtual;
 }
+bool sizedToTheView(const S& s) {
+    return s.mapAllocation == MapAllocation::Fitted && s.directionalFit == DirectionalFit::Samples &&
+           !castsSoftShadows(s);
+}
 bool cascaded(const S& s) {
     return s.cascadeCount != 1;
 }
@@ -254,6 +258,15 @@ const std::vector<SettingRow>& rows() {
          "off.",
          FloatSetting{&S::virtualTexelPixels, {.min = 0.25f, .max = 16.0f}, 0.25f, 8.0f, "%.2f", true},
          virtualMaps, "--texel-pixels"},
+        {"fittedTexelPixels", "pixels", "texel on screen",
+         "Directional maps fitted to the samples: the largest size on screen of one texel at each cascade's "
+         "nearest sample, for a technique that filters over 1 + 2 × its filter radius in texels (pcfRadius, "
+         "momentBlurRadius, half a texel for a bilinear lookup) that many times smaller. The maps take the "
+         "smallest power-of-two side up to `resolution` that meets it, so a "
+         "view that needs fewer texels than `resolution`² draws fewer (a frame with spot or point lights, "
+         "whose maps share the array, keeps `resolution`, as do the soft techniques, whose margins are "
+         "64 texels and more). 0: always `resolution`.",
+         FloatSetting{&S::fittedTexelPixels, {.max = 16.0f}, 0.0f, 4.0f, "%.2f"}, sizedToTheView},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},

@@ -55,6 +55,8 @@ struct BenchResult {
     /// as visibility 1.
     std::size_t peerUnlitReceivers = 0;
     std::size_t shadowBytes = 0;
+    /// Side of the whole maps drawn, texels (ShadowStats::mapResolution); 0 for virtual maps and peer rows.
+    int mapResolution = 0;
     /// Shadow maps drawn (cascades and cube faces count one each); 0 for peer rows.
     int shadowMaps = 0;
     /// Virtual maps (ShadowSettings::mapAllocation): the pages of the cold first frame, and those of the

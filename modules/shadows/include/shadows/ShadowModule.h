@@ -34,6 +34,10 @@ struct ShadowStats {
     /// GPU memory of the allocated shadow maps (depth plus any gradient target), bytes; with virtual maps,
     /// the page pool, the page tables and the request buffer too.
     std::size_t bytes = 0;
+    /// Side of the whole maps drawn in the last frame, texels: ShadowSettings::resolution, or less where a
+    /// directional map took the side its view needs (ShadowSettings::fittedTexelPixels); 0 with none drawn or
+    /// with virtual maps.
+    int mapResolution = 0;
     /// Whether the last frame's lights read virtual maps (ShadowSettings::mapAllocation).
     bool virtualMaps = false;
     /// The virtual maps' page counters in the last frame (zero without virtual maps).

@@ -147,6 +147,12 @@ struct ShadowSettings {
     int virtualPageSize = 128;
     /// Largest extent on screen, pixels, of a texel of the level a virtual page is drawn at (Lloyd's m).
     float virtualTexelPixels = 1.0f;
+    /// Largest size on screen, pixels, of a texel of a directional map fitted to the samples, at each
+    /// cascade's nearest sample, divided by 1 + 2 × the technique's filter radius (ShadowPlan::
+    /// filterRadiusTexels): the map takes the smallest power-of-two side, up to `resolution`, that meets it
+    /// (viewResolution); 0: always `resolution`. Frames with spot or point lights, and the soft techniques,
+    /// keep `resolution`.
+    float fittedTexelPixels = 0.25f;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
     /// Cascades of each directional light's map (1: one map over where visible receivers can be shadowed; 0:
