@@ -206,13 +206,13 @@ fi
 
 if [ "${only[1]:-sizing}" = sizing ]; then
 # 13. Maps sized to the view: the default technique with its directional map sized to what the view resolves
-#     (fittedTexelPixels, the default) and at the full 2048² (fittedTexelPixels=0), timed, on the content scenes
-#     with a sun and every real model, 640x480.
+#     (fittedTexelPixels: the default, half a pixel and a pixel) and at the full 2048² (fittedTexelPixels=0),
+#     timed, on content scenes and real models, 640x480.
 [ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
-"$bench" --scene knob --scene torus --scene spheres --scene suzanne --scene human-subdivided --scene fzk-haus \
-    --scene at-at --scene jeep --scene duck --scene wuson --scene epileptic --scene dwarf --scene cylinder-engine \
+"$bench" --scene knob --scene spheres --scene suzanne --scene fzk-haus --scene duck --scene cylinder-engine \
     --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 7 \
-    --config "full-2048:fittedTexelPixels=0" --out "$work/sizing"
+    --config "full-2048:fittedTexelPixels=0" --config "texel-0.5:fittedTexelPixels=0.5" \
+    --config "texel-1:fittedTexelPixels=1" --out "$work/sizing"
 fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
