@@ -17,6 +17,15 @@ using namespace shadows;
 
 namespace {
 
+/// A box on a plane and a camera above them, looking down at the box (no light).
+engine::Scene boxOnPlaneSeenFromAbove(engine::EntityId& camera) {
+    engine::Scene scene = testsupport::boxOnPlane(10.0f, 1.0f);
+    camera = scene.create("camera");
+    scene.entity(camera).camera = engine::CameraComponent{};
+    scene.entity(camera).transform = engine::Transform::lookAt({0, 5, 6}, {0, 0, 0});
+    return scene;
+}
+
 content::LoadedScene knob(engine::LightType lightType) {
     content::SceneLoadOptions options;
     options.subdivisionLevel = 2; // enough curvature, fewer triangles for the 100+ renders below
@@ -187,10 +196,8 @@ TEST(ShadowModuleGLTest, DebugViewsCompileAndDiffer) {
 
 TEST(ShadowModuleGLTest, ADirectionalMapTakesTheSideItsViewNeeds) {
     glTestContext();
-    engine::Scene scene = testsupport::boxOnPlane(10.0f, 1.0f);
-    const auto camera = scene.create("camera");
-    scene.entity(camera).camera = engine::CameraComponent{};
-    scene.entity(camera).transform = engine::Transform::lookAt({0, 5, 6}, {0, 0, 0});
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
     const auto sun = scene.create("sun");
     scene.entity(sun).light = engine::LightComponent{};
     scene.entity(sun).transform = engine::Transform::lookAt({-2, 5, 1}, {0, 0, 0});
@@ -228,10 +235,8 @@ TEST(ShadowModuleGLTest, ADirectionalMapTakesTheSideItsViewNeeds) {
 
 TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     glTestContext();
-    engine::Scene scene = testsupport::boxOnPlane(10.0f, 1.0f);
-    const auto camera = scene.create("camera");
-    scene.entity(camera).camera = engine::CameraComponent{};
-    scene.entity(camera).transform = engine::Transform::lookAt({0, 5, 6}, {0, 0, 0});
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
 
     engine::Engine engine;
     ShadowSettings settings;
