@@ -73,9 +73,8 @@ struct ShadowPlan {
     /// the same face.
     float kernelReachTexels = 0.0f;
     /// The radius the lookup filters the map over, texels (PCF taps, jitter, the moments' blur, and half a
-    /// texel for a bilinear lookup): a blur that
-    /// widens with the texel, so maps sized to the view take texels 1 + 2 × this times finer
-    /// (ShadowSettings::fittedTexelPixels).
+    /// texel for a bilinear lookup): a blur that widens with the texel, so maps sized to the view take texels
+    /// 1 + 2 × this times finer (ShadowSettings::fittedTexelPixels).
     float filterRadiusTexels = 0.0f;
     /// The soft techniques' part of kernelReachTexels (their widest penumbra), which a light of no size
     /// does not need.

@@ -150,8 +150,8 @@ struct ShadowSettings {
     /// Largest size on screen, pixels, of a texel of a directional map fitted to the samples, at each
     /// cascade's nearest sample, divided by 1 + 2 × the technique's filter radius (ShadowPlan::
     /// filterRadiusTexels): the map takes the smallest power-of-two side, up to `resolution`, that meets it
-    /// (viewResolution); 0: always `resolution`. Frames with spot or point lights, and the soft techniques,
-    /// keep `resolution`.
+    /// (viewResolution); 0: always `resolution`. Frames with spot or point lights or a second sun, and the
+    /// soft techniques, keep `resolution`.
     float fittedTexelPixels = 0.25f;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
