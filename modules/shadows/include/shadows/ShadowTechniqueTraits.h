@@ -114,8 +114,8 @@ struct ShadowTechniqueTraits {
     /// Texels beyond the receiver its kernel may read besides a tap pattern's (a soft shadow's widest
     /// penumbra) for these settings: maps keep that margin, and virtual pages that border; null for none.
     float (*softReachTexels)(const ShadowSettings&) = nullptr;
-    /// Reads each map's own reach (gsShadowSoftReachTexels): a directional map fitted to the samples widens its
-    /// margin to the light's widest penumbra over its depth range (SoftMargin), beyond softReachTexels.
+    /// Reads each map's own reach (gsShadowSoftReachTexels): a directional map fitted to the samples widens
+    /// its margin to the light's widest penumbra over its depth range (SoftMargin), beyond softReachTexels.
     bool softReachFollowsLight = false;
 };
 
