@@ -37,7 +37,8 @@ SoftMargin FittedShadowMaps::softMargin(const engine::FrameLight& light) const {
 }
 
 bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
-                                           std::vector<MapSlot>& slots, LightMapsBlock& maps) {
+                                           bool sizeToView, std::vector<MapSlot>& slots,
+                                           LightMapsBlock& maps) {
     const auto bounds = samples_.measure(host_, frame.frame, frame.fit, lightView(light.direction),
                                          settings_.cascadeSplitWeight, settings_.cascadeBlend);
     if (!bounds) {
@@ -62,12 +63,10 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
                                                 frame.fit.projection, frame.frame.target.size.y);
     const float hardMargin = plan_.kernelReachTexels - plan_.softReachTexels;
     const int resolution =
-        viewSizedMaps_
-            ? viewResolution(slices, bounds->sliceDepths, count, settings_.resolution,
-                             hardMargin + softMargin(light).texels,
-                             settings_.fittedTexelPixels / (1.0f + 2.0f * plan_.filterRadiusTexels),
-                             frame.fit.projection, frame.frame.target.size.y)
-            : settings_.resolution;
+        sizeToView ? viewResolution(slices, bounds->sliceDepths, count, settings_.resolution, hardMargin,
+                                    settings_.fittedTexelPixels / (1.0f + 2.0f * plan_.filterRadiusTexels),
+                                    frame.fit.projection, frame.frame.target.size.y)
+                   : settings_.resolution;
     const auto fitted = [&](int cascade) {
         return fitToSamples(light.direction,
                             slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], frame.boxes,
@@ -133,7 +132,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
     const auto casters =
         std::count_if(frame.frame.lights.begin(), frame.frame.lights.end(),
                       [](const engine::FrameLight& light) { return light.light.castsShadows; });
-    viewSizedMaps_ =
+    const bool sizeToView =
         settings_.fittedTexelPixels > 0.0f && plan_.softReachTexels == 0.0f && casters == 1 &&
         std::any_of(frame.frame.lights.begin(), frame.frame.lights.end(), [](const auto& light) {
             return light.light.castsShadows && light.light.type == engine::LightType::Directional;
@@ -149,7 +148,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
         switch (light.light.type) {
         case engine::LightType::Directional:
             if (settings_.directionalFit != DirectionalFit::Samples ||
-                !fitToVisibleSamples(frame, light, slots, maps)) {
+                !fitToVisibleSamples(frame, light, sizeToView, slots, maps)) {
                 fitToBounds(frame, light, visibleRange, slots, maps);
             }
             break;

@@ -38,9 +38,10 @@ private:
     /// @brief The soft part of that reach: none for a light of no size; for a directional light of a
     /// technique that follows it (softReachFollowsLight), as wide as its penumbrae over the map's depth.
     [[nodiscard]] SoftMargin softMargin(const engine::FrameLight& light) const;
-    /// Fits directional light `light`'s maps to the visible samples into `maps` and `slots`; false, having
-    /// added nothing, when the view has no sample.
-    bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
+    /// Fits directional light `light`'s maps to the visible samples into `maps` and `slots`, at the side
+    /// the view needs with `sizeToView` (ShadowSettings::fittedTexelPixels), else at `resolution`; false,
+    /// having added nothing, when the view has no sample.
+    bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light, bool sizeToView,
                              std::vector<MapSlot>& slots, LightMapsBlock& maps);
     /// Fits directional light `light`'s maps to the mesh bounds in view.
     void fitToBounds(const AllocationFrame& frame, const engine::FrameLight& light,
@@ -53,8 +54,6 @@ private:
     VisibleSamples& samples_;
     OnceWarnings& warnings_;
     std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
-    // This frame's directional maps take the side their view needs (ShadowSettings::fittedTexelPixels).
-    bool viewSizedMaps_ = false;
 };
 
 } // namespace shadows
