@@ -53,17 +53,20 @@ def frame_table(root, reports):
     first = json.loads(reports[0].read_text())
     lines = [
         f"Renderer: {first['renderer']} ({first['glVersion']}). Timing: {first['timingMethod']}, "
-        f"median of {first['frames']} frames after one warm-up frame.",
+        f"median of {first['frames']} frames after one warm-up frame, of a still view: frames that keep their shadow "
+        "maps (ShadowSettings::reuseUnchangedMaps) count them in the last column.",
         "",
-        "| image | technique | size | triangles drawn (after culling) | frame ms (median) | programs compiled |",
-        "| --- | --- | --- | --- | --- | --- |",
+        "| image | technique | size | triangles drawn (after culling) | frame ms (median) | programs compiled | "
+        "frames keeping their maps |",
+        "| --- | --- | --- | --- | --- | --- | --- |",
     ]
     for path in reports:
         r = json.loads(path.read_text())
         image = pathlib.Path(r["image"])
         image = image.relative_to(root) if image.is_relative_to(root) else image
         lines.append(f"| {image} | {r['shadowTechnique']} | {r['width']}x{r['height']} | {r['triangles']} | "
-                     f"{r['frameMillisecondsMedian']:.1f} | {r['programsCompiled']} |")
+                     f"{r['frameMillisecondsMedian']:.1f} | {r['programsCompiled']} | "
+                     f"{r.get('framesReusingShadowMaps', 0)} / {r['frames']} |")
     return "\n".join(lines) + "\n"
 
 

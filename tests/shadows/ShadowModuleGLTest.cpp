@@ -5,6 +5,7 @@
 
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
+#include <engine/Primitives.h>
 #include <engine/RenderTarget.h>
 #include <shadows/ShadowModule.h>
 
@@ -231,6 +232,126 @@ TEST(ShadowModuleGLTest, ADirectionalMapTakesTheSideItsViewNeeds) {
     scene.entity(spot).light->type = engine::LightType::Spot;
     scene.entity(spot).transform = engine::Transform::lookAt({2, 5, 1}, {0, 0, 0});
     EXPECT_EQ(sideAt({64, 48}), settings.resolution);
+}
+
+/// A still scene, and one change to what its maps are drawn from.
+struct MapInputChange {
+    const char* name;
+    void (*apply)(engine::Scene& scene, glm::ivec2& size);
+};
+
+class KeptMapsGLTest : public ::testing::TestWithParam<MapInputChange> {};
+
+/// The box on its plane under a sun, as the visibility debug view at `size`, rendered with `module`'s engine.
+std::vector<float> visibilityImage(engine::Engine& engine, const engine::Scene& scene, glm::ivec2 size) {
+    engine::RenderTarget target(size, engine::ColorFormat::Rgba32F);
+    engine.renderFrame(scene, *scene.firstCamera(), target);
+    return target.readPixelsFloat();
+}
+
+engine::Scene boxOnPlaneUnderASun() {
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
+    const auto sun = scene.create("sun");
+    scene.entity(sun).light = engine::LightComponent{};
+    scene.entity(sun).transform = engine::Transform::lookAt({-2, 5, 1}, {0, 0, 0});
+    return scene;
+}
+
+TEST_P(KeptMapsGLTest, AStillViewKeepsItsMapsUntilWhatTheyAreDrawnFromChanges) {
+    glTestContext();
+    engine::Scene scene = boxOnPlaneUnderASun();
+    glm::ivec2 size{96, 72};
+    ShadowSettings settings;
+    settings.debugView = ShadowDebugView::Visibility;
+    engine::Engine engine;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    // Every frame drawing its maps: what each frame must look like.
+    ShadowSettings redrawing = settings;
+    redrawing.reuseUnchangedMaps = false;
+    const auto redrawn = [&] {
+        engine::Engine reference;
+        reference.addModule(std::make_unique<ShadowModule>(redrawing));
+        return visibilityImage(reference, scene, size);
+    };
+
+    visibilityImage(engine, scene, size);
+    EXPECT_FALSE(module.stats().reusedMaps) << "the first frame draws its maps";
+    EXPECT_EQ(visibilityImage(engine, scene, size), redrawn());
+    EXPECT_TRUE(module.stats().reusedMaps) << "the same frame again keeps them";
+
+    GetParam().apply(scene, size);
+    const std::vector<float> changed = visibilityImage(engine, scene, size);
+    EXPECT_FALSE(module.stats().reusedMaps) << GetParam().name;
+    EXPECT_EQ(changed, redrawn()) << GetParam().name;
+    EXPECT_EQ(visibilityImage(engine, scene, size), changed);
+    EXPECT_TRUE(module.stats().reusedMaps) << "still again after " << GetParam().name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryInput, KeptMapsGLTest,
+    ::testing::Values(
+        MapInputChange{"CameraMoves",
+                       [](engine::Scene& scene, glm::ivec2&) {
+                           scene.entity(*scene.firstCamera()).transform =
+                               engine::Transform::lookAt({1, 4, 6}, {0, 0, 0});
+                       }},
+        MapInputChange{"CasterMoves",
+                       [](engine::Scene& scene, glm::ivec2&) {
+                           scene.entity(*scene.find("box")).transform.translation.x += 1.0f;
+                       }},
+        MapInputChange{"MeshReplaced",
+                       [](engine::Scene& scene, glm::ivec2&) {
+                           scene.entity(*scene.find("box")).mesh = engine::MeshComponent{
+                               std::make_shared<engine::MeshData>(engine::primitives::cube(2.0f))};
+                       }},
+        MapInputChange{
+            "SunTurns",
+            [](engine::Scene& scene, glm::ivec2&) {
+                scene.entity(*scene.find("sun")).transform = engine::Transform::lookAt({2, 5, -1}, {0, 0, 0});
+            }},
+        MapInputChange{"SunGrowsSofter",
+                       [](engine::Scene& scene, glm::ivec2&) {
+                           scene.entity(*scene.find("sun")).light->angularDiameter *= 4.0f;
+                       }},
+        MapInputChange{"SunStopsCasting",
+                       [](engine::Scene& scene, glm::ivec2&) {
+                           scene.entity(*scene.find("sun")).light->castsShadows = false;
+                       }},
+        MapInputChange{"ViewResized",
+                       [](engine::Scene&, glm::ivec2& size) {
+                           size = {64, 48};
+                       }}),
+    [](const ::testing::TestParamInfo<MapInputChange>& change) { return std::string(change.param.name); });
+
+TEST(ShadowModuleGLTest, MapsAreRedrawnAfterASettingsChangeAndEveryFrameWithoutReuse) {
+    glTestContext();
+    engine::Scene scene = boxOnPlaneUnderASun();
+    ShadowSettings settings;
+    settings.debugView = ShadowDebugView::Visibility;
+    engine::Engine engine;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    visibilityImage(engine, scene, {64, 48});
+    visibilityImage(engine, scene, {64, 48});
+    EXPECT_TRUE(module.stats().reusedMaps);
+    settings.resolution = 1024;
+    module.setSettings(settings);
+    visibilityImage(engine, scene, {64, 48});
+    EXPECT_FALSE(module.stats().reusedMaps) << "a settings change";
+    settings.reuseUnchangedMaps = false;
+    module.setSettings(settings);
+    for (int frame = 0; frame < 3; ++frame) {
+        visibilityImage(engine, scene, {64, 48});
+        EXPECT_FALSE(module.stats().reusedMaps) << "frame " << frame << " with reuseUnchangedMaps off";
+    }
+    // Virtual maps keep their pages themselves: every frame runs their sample pass.
+    settings.reuseUnchangedMaps = true;
+    settings.mapAllocation = MapAllocation::Virtual;
+    module.setSettings(settings);
+    for (int frame = 0; frame < 2; ++frame) {
+        visibilityImage(engine, scene, {64, 48});
+        EXPECT_FALSE(module.stats().reusedMaps) << "virtual maps, frame " << frame;
+    }
 }
 
 TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {

@@ -52,6 +52,7 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --chunk-triangles N  triangles per draw chunk, 1..16777216   [4096]
   --no-culling     draw chunks outside the view volume too
   --depth-prepass  lay down depth first, then shade with an EQUAL depth test
+  --redraw-maps    draw the shadow maps every frame, as a moving view does (else a still view keeps them)
   --allocator A    tuned (mallopt on CPU rasterisers) or default  [tuned]
   --list-techniques  print every shadow technique's name, one a line, and exit
   --help           this text
@@ -174,6 +175,8 @@ Options parse(int argc, char** argv) {
             options.culling = false;
         } else if (arg == "--depth-prepass") {
             options.depthPrePass = true;
+        } else if (arg == "--redraw-maps") {
+            settings.reuseUnchangedMaps = false;
         } else if (arg == "--allocator") {
             const std::string name = value();
             if (name != "tuned" && name != "default") {
@@ -249,6 +252,7 @@ int main(int argc, char** argv) {
             engine.renderFrame(scene, *camera, target); // warm-up: uploads and compiles
         glFinish();
         std::vector<double> milliseconds;
+        int framesReusingMaps = 0;
         const long faultsBefore = minorPageFaults();
         for (int frame = 0; frame < options.frames; ++frame) {
             const auto start = std::chrono::steady_clock::now();
@@ -256,6 +260,7 @@ int main(int argc, char** argv) {
             glFinish();
             milliseconds.push_back(
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+            framesReusingMaps += shadowModule && shadowModule->stats().reusedMaps;
         }
         const double faultsPerFrame =
             static_cast<double>(minorPageFaults() - faultsBefore) / static_cast<double>(options.frames);
@@ -292,7 +297,8 @@ int main(int argc, char** argv) {
                << "  \"shadowMaps\": " << (shadowModule ? shadowModule->stats().shadowMaps : 0) << ",\n"
                << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n"
                << "  \"shadowMapResolution\": " << (shadowModule ? shadowModule->stats().mapResolution : 0)
-               << ",\n";
+               << ",\n"
+               << "  \"framesReusingShadowMaps\": " << framesReusingMaps << ",\n";
         if (shadowModule && shadowModule->stats().virtualMaps) {
             // The last timed frame's pages: a static view draws none once the first frame has.
             const shadows::VirtualPageStats pages = shadowModule->stats().pages;

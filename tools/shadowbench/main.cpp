@@ -391,8 +391,10 @@ int main(int argc, char** argv) {
                                   ? "path shimmer " + std::to_string(results.back().pathShimmer) + ", "
                                   : std::string())
                           << "shadow " << results.back().shadowPass.median << " ms, lighting "
-                          << results.back().lightingPass.median << " ms; " << std::fixed
-                          << std::setprecision(1) << seconds << std::defaultfloat << " s\n"
+                          << results.back().lightingPass.median << " ms, frame "
+                          << results.back().frame.median << " ms (still " << results.back().stillFrame.median
+                          << " ms); " << std::fixed << std::setprecision(1) << seconds << std::defaultfloat
+                          << " s\n"
                           << std::flush;
             }
             shadowbench::SceneCost cost = bench.measureCost(*scene);

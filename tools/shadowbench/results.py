@@ -337,7 +337,8 @@ def engine_options():
     folder = work / "engine"
     out.append("### Renderer options\n")
     out.append("`gs-render` whole frames (median of 15, 640x480) per model and technique with the defaults (chunks of "
-               "4096 triangles, culling, tuned allocator, no pre-pass) and the ratio of each alternative to it, all "
+               "4096 triangles, culling, tuned allocator, no pre-pass; every frame drawing its shadow maps, "
+               "`--redraw-maps`) and the ratio of each alternative to it, all "
                "in one run: `prepass` lays down depth first and shades with an EQUAL test; `default allocator` "
                "keeps glibc's mmap/trim thresholds; `unchunked` draws each mesh whole (culling then has nothing to "
                "cull within a mesh); `repeat` is the defaults run again, so it shows how far two identical runs differ "

@@ -65,6 +65,8 @@ struct LightComponent {
     /// @brief Largest angular diameter a directional light may have, radians: a disk wider than a hemisphere
     /// is no longer a direction.
     static constexpr float kMaxAngularDiameter = 3.14159265358979f / 2.0f;
+
+    bool operator==(const LightComponent&) const = default;
 };
 
 enum class ProjectionType { Perspective, Orthographic };

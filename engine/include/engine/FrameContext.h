@@ -27,6 +27,8 @@ struct FrameLight {
     /// Unit vector the light shines along (world space): the entity's -Z axis. Directional and spot lights
     /// only; a point light shines every way, so for it this is just the entity's orientation.
     glm::vec3 direction{0.0f, 0.0f, -1.0f};
+
+    bool operator==(const FrameLight&) const = default;
 };
 
 /// @brief Everything modules may read about the frame being drawn.

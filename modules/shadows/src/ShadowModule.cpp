@@ -1,5 +1,6 @@
 #include "FittedShadowMaps.h"
 #include "JitterTexture.h"
+#include "MapInputs.h"
 #include "ShadowSamplers.h"
 #include "VirtualShadowMaps.h"
 #include "VisibleSamples.h"
@@ -71,6 +72,7 @@ void ShadowModule::setSettings(const ShadowSettings& settings) {
 ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
     stats.shadowMaps = static_cast<int>(slots_.size());
+    stats.reusedMaps = reusedMaps_;
     if (allocation_) {
         stats.bytes = allocation_->bytes();
         stats.virtualMaps = allocation_->servedVirtualMaps();
@@ -131,6 +133,7 @@ void ShadowModule::releaseResources() {
     slots_.clear();
     allocation_.reset();
     uploadedFrame_.clear();
+    drawnFrom_.reset();
 }
 
 MapAllocator& ShadowModule::allocation() {
@@ -177,16 +180,8 @@ void ShadowModule::prepareFrame(const engine::FrameContext& frame) {
     }
 }
 
-void ShadowModule::fitMaps(const engine::FrameContext& frame) {
-    // World bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
-    std::vector<Aabb> boxes;
-    std::vector<engine::EntityId> entities;
-    host_->forEachMeshBounds(frame.scene,
-                             [&](engine::EntityId entity, const glm::mat4& model, const Aabb& local) {
-                                 boxes.push_back(local.transformed(model));
-                                 entities.push_back(entity);
-                             });
-    const FitView fit = fitView_.value_or(FitView{frame.view, frame.projection});
+void ShadowModule::fitMaps(const engine::FrameContext& frame, const FitView& fit,
+                           const std::vector<Aabb>& boxes, const std::vector<engine::EntityId>& entities) {
     slots_.clear();
     std::vector<LightMapsBlock> lights(engine::ForwardRenderer::kMaxLights);
     for (LightMapsBlock& maps : lights) {
@@ -228,11 +223,35 @@ engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBloc
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
-    // Fitted here rather than in prepareFrame, so the pass timing includes the view's sample pass.
-    fitMaps(frame);
-    if (slots_.empty()) {
+    // Fitted here rather than in prepareFrame, so the pass timing includes the view's sample pass. World
+    // bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
+    MapInputs inputs{
+        fitView_.value_or(FitView{frame.view, frame.projection}), frame.target.size, frame.lights, {}};
+    std::vector<Aabb> boxes;
+    std::vector<engine::EntityId> entities;
+    host_->forEachMeshBounds(
+        frame.scene, [&](engine::EntityId entity, const glm::mat4& model, const Aabb& local) {
+            boxes.push_back(local.transformed(model));
+            entities.push_back(entity);
+            inputs.meshes.push_back({entity, model, frame.scene.entity(entity).mesh->mesh});
+        });
+    // Virtual maps keep their pages themselves, per page (VirtualShadowMaps).
+    const bool reusable = settings_.reuseUnchangedMaps && settings_.mapAllocation == MapAllocation::Fitted;
+    reusedMaps_ = reusable && allocation_ && drawnFrom_ && *drawnFrom_ == inputs;
+    if (reusedMaps_) {
         return;
     }
+    drawnFrom_.reset(); // until this frame's maps are drawn
+    fitMaps(frame, inputs.fit, boxes, entities);
+    if (!slots_.empty()) {
+        drawMaps(frame);
+    }
+    if (reusable) {
+        drawnFrom_ = std::make_unique<MapInputs>(std::move(inputs));
+    }
+}
+
+void ShadowModule::drawMaps(const engine::FrameContext& frame) {
     const engine::gl::Program& program = host_->programs().get(kDepthProgram, depthKey_);
     program.use();
     glBindBufferBase(GL_UNIFORM_BUFFER, kShadowBlockBinding, shadowBlock_->id());

@@ -84,6 +84,9 @@ bool sizedToTheView(const S& s) {
 bool cascaded(const S& s) {
     return s.cascadeCount != 1;
 }
+bool fittedMaps(const S& s) {
+    return s.mapAllocation == MapAllocation::Fitted;
+}
 template <ShadowTechnique Technique>
 bool only(const S& s) {
     return s.technique == Technique;
@@ -267,6 +270,12 @@ const std::vector<SettingRow>& rows() {
          "whose maps share the array, keeps `resolution`, as do the soft techniques, whose margins are "
          "64 texels and more). 0: always `resolution`.",
          FloatSetting{&S::fittedTexelPixels, {.max = 16.0f}, 0.0f, 4.0f, "%.2f"}, sizedToTheView},
+        {"reuseUnchangedMaps", "", "reuse unchanged maps",
+         "Keep the last frame's fitted maps when nothing they are drawn from changed (the view, its size, "
+         "the "
+         "lights, every mesh and its transform): a still view draws no map and runs no sample pass. Off, "
+         "every frame draws its maps, as a moving camera does.",
+         BoolSetting{&S::reuseUnchangedMaps}, fittedMaps},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},

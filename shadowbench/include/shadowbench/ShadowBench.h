@@ -47,8 +47,15 @@ struct BenchResult {
     std::optional<SoftShadowMetrics> soft;
     PassTiming shadowPass;
     PassTiming lightingPass;
-    /// Whole frames (glFinish + steady clock around Engine::renderFrame), as an application would see them.
+    /// Whole frames (glFinish + steady clock around Engine::renderFrame), as an application would see them,
+    /// each drawing its maps (ShadowSettings::reuseUnchangedMaps off), as every frame of a moving view does.
+    /// The passes above are timed the same way.
     PassTiming frame;
+    /// The same view's frames with reuseUnchangedMaps on after one that drew them: a still view's, which
+    /// keep fitted maps (virtual maps keep their pages either way). Negative medians when not timed.
+    PassTiming stillFrame{-1.0, -1.0, -1.0};
+    /// Whether the last of those frames kept its maps (ShadowStats::reusedMaps).
+    bool stillFrameKeptMaps = false;
     /// Empty for our techniques; the osgShadow class for rows of the OpenSceneGraph peer (PeerRun).
     std::string peerClass;
     /// Peer rows: receivers the peer left unlit in its unshadowed frame (a silhouette a pixel off); counted

@@ -19,6 +19,7 @@
 namespace shadows {
 
 struct LightMapsBlock;
+struct MapInputs;
 struct MapSlot;
 class MapAllocator;
 class ShadowSamplers;
@@ -38,6 +39,9 @@ struct ShadowStats {
     /// directional map took the side its view needs (ShadowSettings::fittedTexelPixels); 0 with none drawn or
     /// with virtual maps.
     int mapResolution = 0;
+    /// Whether the last frame kept the maps of the frame before, nothing they are drawn from having changed
+    /// (ShadowSettings::reuseUnchangedMaps): it drew no map and ran no sample pass.
+    bool reusedMaps = false;
     /// Whether the last frame's lights read virtual maps (ShadowSettings::mapAllocation).
     bool virtualMaps = false;
     /// The virtual maps' page counters in the last frame (zero without virtual maps).
@@ -92,7 +96,8 @@ public:
     /// @brief Fits a projection for each shadow-casting light to the receivers in view (a directional light's
     /// to the visible samples of a depth pass of the view, by default), allocates its map (again after a
     /// settings change), uploads the shadow uniform block, then draws the shadow maps (and filters moments
-    /// for the moment techniques).
+    /// for the moment techniques). A frame that changed nothing the fitted maps are drawn from keeps the
+    /// last frame's (ShadowSettings::reuseUnchangedMaps).
     void renderPrePasses(const engine::FrameContext& frame) override;
     /// @brief The technique's lighting variant while this frame has a shadow map, else 0.
     [[nodiscard]] engine::ShaderVariantKey variantBits(const engine::DrawContext& draw) const override;
@@ -104,8 +109,12 @@ private:
     void releaseResources();
     /// The allocation of the settings' ShadowSettings::mapAllocation, made after a settings change.
     MapAllocator& allocation();
-    /// Fits every shadow-casting light's maps for `frame`, allocates them and uploads the block.
-    void fitMaps(const engine::FrameContext& frame);
+    /// Fits every shadow-casting light's maps for `frame` seen through `fit`, whose meshes have world bounds
+    /// `boxes` (of `entities`), allocates them and uploads the block.
+    void fitMaps(const engine::FrameContext& frame, const FitView& fit, const std::vector<Aabb>& boxes,
+                 const std::vector<engine::EntityId>& entities);
+    /// Draws the maps fitted for `frame` (and blurs and filters their moments where the plan asks).
+    void drawMaps(const engine::FrameContext& frame);
     /// Blurs the moments (ShadowPlan::blursMoments).
     void blurMoments();
     /// Writes this frame's GsShadowBlock: the maps' projections, each light's maps and size (of
@@ -142,6 +151,8 @@ private:
     engine::ShaderVariantKey depthKey_ = 0;
     engine::ShaderVariantKey layoutKey_ = 0;        // this frame's map layouts
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds
+    std::unique_ptr<MapInputs> drawnFrom_;          // what the fitted maps in place were drawn from
+    bool reusedMaps_ = false;                       // this frame kept them
     std::uint64_t frameIndex_ = 0;
     bool dirty_ = true;
 };
