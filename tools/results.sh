@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only virtual|soft|cost|sizing] [work folder, default out/results]
+# Usage: bash tools/results.sh [--only virtual|soft|cost|sizing|still] [work folder, default out/results]
 # --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads), --only soft step 12, --only
-# cost step 10, --only sizing step 13, and replaces only that step's section of docs/RESULTS.md ("Virtual maps",
-# "Soft shadows", "Cost model", "Maps sized to the view"), which then says so.
+# cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and replaces only that step's
+# section of docs/RESULTS.md ("Virtual maps", "Soft shadows", "Cost model", "Maps sized to the view", "A still
+# view keeps its maps"), which then says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        virtual | soft | cost | sizing) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'virtual', 'soft', 'cost' or 'sizing'" >&2; exit 2 ;;
+        virtual | soft | cost | sizing | still) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2; exit 2 ;;
     esac
     shift 2
 fi
@@ -21,6 +22,7 @@ cmake --build --preset default --target gs-shadowbench gs-render gs-corpus gs-os
 bench=./build/bin/gs-shadowbench
 rm -rf "$work"
 
+corpus=(suzanne human-subdivided fzk-haus at-at jeep duck wuson epileptic dwarf cylinder-engine terrain)
 peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<scene stem>/NAME
     local scene=$1 name=$2 stem
     stem=$(basename "${scene%.*}")
@@ -71,7 +73,6 @@ reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false,gra
 # 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
 #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
 bash tools/corpus.sh
-corpus=(suzanne human-subdivided fzk-haus at-at jeep duck wuson epileptic dwarf cylinder-engine terrain)
 for model in "${corpus[@]}"; do
     peer "corpus/$model.glb" vdsm sm lispsm ssm
 done
@@ -214,6 +215,21 @@ if [ "${only[1]:-sizing}" = sizing ]; then
     --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 7 \
     --config "full-2048:fittedTexelPixels=0" --config "texel-0.5:fittedTexelPixels=0.5" \
     --config "texel-1:fittedTexelPixels=1" --out "$work/sizing"
+fi
+
+if [ "${only[1]:-still}" = still ]; then
+# 14. A still view keeps its maps: the default technique on every real model and the generated apron (one mesh),
+#     timed with every frame drawing its maps, as a moving view's do, and on the still view, which keeps them;
+#     osgShadow's ViewDependentShadowMap beside it (step 4 ran the peer on the models; the apron's run is here).
+if [ ${#only[@]} -gt 0 ]; then
+    bash tools/corpus.sh
+    for model in "${corpus[@]}"; do
+        peer "corpus/$model.glb" vdsm
+    done
+fi
+peer corpus/apron-merged.glb vdsm
+"$bench" $(printf -- '--scene %s ' "${corpus[@]}") --scene apron-merged --techniques default --resolutions 2048 \
+    --size 640x480 --frames 7 --peer "$work/osg" --out "$work/still"
 fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).
