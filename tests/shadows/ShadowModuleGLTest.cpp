@@ -324,7 +324,8 @@ INSTANTIATE_TEST_SUITE_P(
                        }}),
     [](const ::testing::TestParamInfo<MapInputChange>& change) { return std::string(change.param.name); });
 
-TEST(ShadowModuleGLTest, MapsAreRedrawnAfterASettingsChangeAndEveryFrameWithoutReuse) {
+TEST(ShadowModuleGLTest,
+     MapsAreRedrawnAfterASettingsChangeAndEveryFrameWithoutReuseVirtualOnesKeptAfterAnIdleUpdate) {
     glTestContext();
     engine::Scene scene = boxOnPlaneUnderASun();
     ShadowSettings settings;
@@ -344,14 +345,23 @@ TEST(ShadowModuleGLTest, MapsAreRedrawnAfterASettingsChangeAndEveryFrameWithoutR
         visibilityImage(engine, scene, {64, 48});
         EXPECT_FALSE(module.stats().reusedMaps) << "frame " << frame << " with reuseUnchangedMaps off";
     }
-    // Virtual maps keep their pages themselves: every frame runs their sample pass.
-    settings.reuseUnchangedMaps = true;
+    // Virtual maps: the first frame draws pages, the second updates them and draws none, the third keeps
+    // them, with the image and page counters of an update.
     settings.mapAllocation = MapAllocation::Virtual;
     module.setSettings(settings);
-    for (int frame = 0; frame < 2; ++frame) {
-        visibilityImage(engine, scene, {64, 48});
-        EXPECT_FALSE(module.stats().reusedMaps) << "virtual maps, frame " << frame;
-    }
+    visibilityImage(engine, scene, {64, 48});
+    EXPECT_GT(module.stats().pages.rendered, 0);
+    const std::vector<float> updated = visibilityImage(engine, scene, {64, 48});
+    EXPECT_FALSE(module.stats().reusedMaps) << "virtual maps without reuse";
+    EXPECT_EQ(module.stats().pages.rendered, 0);
+    settings.reuseUnchangedMaps = true;
+    module.setSettings(settings);
+    visibilityImage(engine, scene, {64, 48});
+    visibilityImage(engine, scene, {64, 48});
+    EXPECT_FALSE(module.stats().reusedMaps) << "virtual maps keep pages only after an update that drew none";
+    EXPECT_EQ(visibilityImage(engine, scene, {64, 48}), updated);
+    EXPECT_TRUE(module.stats().reusedMaps) << "virtual maps' third still frame";
+    EXPECT_EQ(module.stats().pages.rendered, 0);
 }
 
 TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {

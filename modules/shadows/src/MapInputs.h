@@ -13,7 +13,7 @@
 
 namespace shadows {
 
-/// @brief Everything a frame's fitted shadow maps are drawn from: the view they are fitted to and its
+/// @brief Everything a frame's shadow maps are drawn from: the view they are fitted to and its
 /// target's size (the sample pass), each light, and every mesh with its world matrix. A frame whose inputs
 /// equal the last frame's would fit and draw the same maps, so it keeps them
 /// (ShadowSettings::reuseUnchangedMaps). Mesh data is immutable (an edited mesh is a new MeshData), so which

@@ -235,9 +235,11 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
             entities.push_back(entity);
             inputs.meshes.push_back({entity, model, frame.scene.entity(entity).mesh->mesh});
         });
-    // Virtual maps keep their pages themselves, per page (VirtualShadowMaps).
-    const bool reusable = settings_.reuseUnchangedMaps && settings_.mapAllocation == MapAllocation::Fitted;
-    reusedMaps_ = reusable && allocation_ && drawnFrom_ && *drawnFrom_ == inputs;
+    // Virtual maps are kept once an update with these inputs drew no page: their page table's drawn bits (the
+    // pages debug view) and page counters then say what a kept frame draws, nothing.
+    const bool reusable = settings_.reuseUnchangedMaps;
+    reusedMaps_ = reusable && allocation_ && drawnFrom_ && *drawnFrom_ == inputs &&
+                  (!allocation_->servedVirtualMaps() || allocation_->pageStats().rendered == 0);
     if (reusedMaps_) {
         return;
     }

@@ -84,9 +84,6 @@ bool sizedToTheView(const S& s) {
 bool cascaded(const S& s) {
     return s.cascadeCount != 1;
 }
-bool fittedMaps(const S& s) {
-    return s.mapAllocation == MapAllocation::Fitted;
-}
 template <ShadowTechnique Technique>
 bool only(const S& s) {
     return s.technique == Technique;
@@ -271,11 +268,11 @@ const std::vector<SettingRow>& rows() {
          "64 texels and more). 0: always `resolution`.",
          FloatSetting{&S::fittedTexelPixels, {.max = 16.0f}, 0.0f, 4.0f, "%.2f"}, sizedToTheView},
         {"reuseUnchangedMaps", "", "reuse unchanged maps",
-         "Keep the last frame's fitted maps when nothing they are drawn from changed (the view, its size, "
-         "the "
-         "lights, every mesh and its transform): a still view draws no map and runs no sample pass. Off, "
-         "every frame draws its maps, as a moving camera does.",
-         BoolSetting{&S::reuseUnchangedMaps}, fittedMaps},
+         "Keep the last frame's maps when nothing they are drawn from changed (the view, its size, the "
+         "lights, every mesh and its transform): a still view draws no map and runs no sample pass "
+         "(virtual maps: from the frame after one that drew no page). Off, every frame draws its fitted "
+         "maps and updates its virtual ones, as a moving camera does.",
+         BoolSetting{&S::reuseUnchangedMaps}, always},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",
          BoolSetting{&S::texelSnapping}, always},

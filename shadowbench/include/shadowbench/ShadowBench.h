@@ -52,7 +52,8 @@ struct BenchResult {
     /// The passes above are timed the same way.
     PassTiming frame;
     /// The same view's frames with reuseUnchangedMaps on after one that drew them: a still view's, which
-    /// keep fitted maps (virtual maps keep their pages either way). Negative medians when not timed.
+    /// keep their maps (virtual maps from the frame after an update that drew no page). Negative medians when
+    /// not timed.
     PassTiming stillFrame{-1.0, -1.0, -1.0};
     /// Whether the last of those frames kept its maps (ShadowStats::reusedMaps).
     bool stillFrameKeptMaps = false;

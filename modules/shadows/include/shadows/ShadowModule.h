@@ -96,7 +96,7 @@ public:
     /// @brief Fits a projection for each shadow-casting light to the receivers in view (a directional light's
     /// to the visible samples of a depth pass of the view, by default), allocates its map (again after a
     /// settings change), uploads the shadow uniform block, then draws the shadow maps (and filters moments
-    /// for the moment techniques). A frame that changed nothing the fitted maps are drawn from keeps the
+    /// for the moment techniques). A frame that changed nothing the maps are drawn from keeps the
     /// last frame's (ShadowSettings::reuseUnchangedMaps).
     void renderPrePasses(const engine::FrameContext& frame) override;
     /// @brief The technique's lighting variant while this frame has a shadow map, else 0.

@@ -153,7 +153,8 @@ struct ShadowSettings {
     /// (viewResolution); 0: always `resolution`. Frames with spot or point lights or a second sun, and the
     /// soft techniques, keep `resolution`.
     float fittedTexelPixels = 0.25f;
-    /// Keeps the last frame's fitted maps while nothing they are drawn from changes (MapAllocation::Fitted).
+    /// Keeps the last frame's maps while nothing they are drawn from changes (virtual maps: once an update
+    /// drew no page).
     bool reuseUnchangedMaps = true;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
