@@ -404,6 +404,45 @@ TEST(FilteredShadowMathTest, QuantisedMomentsRoundTripWithinTheSixteenBitBound) 
 
 // ---- Automatic bias: normal offset and the adaptive depth bias's tangent plane ----
 
+struct FacetCase {
+    const char* name;
+    float scale; // of the screen derivatives: a pixel's world size
+};
+
+class FacetNormalTest : public ::testing::TestWithParam<FacetCase> {};
+
+TEST_P(FacetNormalTest, IsTheUnitNormalFacingTheViewerAtEveryScale) {
+    // A facet tilted off every axis, its derivatives at the case's scale: dPdx × dPdy, unit length.
+    const float s = GetParam().scale;
+    const glm::vec3 dPdx = s * glm::vec3(1.0f, 0.2f, -0.1f);
+    const glm::vec3 dPdy = s * glm::vec3(0.3f, 0.1f, 1.0f);
+    const glm::vec3 expected =
+        glm::normalize(glm::cross(glm::vec3(1.0f, 0.2f, -0.1f), glm::vec3(0.3f, 0.1f, 1.0f)));
+    const glm::vec3 facet = g::gsFacetNormal(dPdx, dPdy, glm::vec3(0.0f, 1.0f, 0.0f));
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(facet[c], expected[c], 1e-6f) << GetParam().name << " component " << c;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, FacetNormalTest,
+                         ::testing::Values(FacetCase{"Unit", 1.0f}, FacetCase{"Millimetre", 1e-3f},
+                                           FacetCase{"Tiny", 1e-20f}, FacetCase{"Huge", 1e30f}),
+                         [](const ::testing::TestParamInfo<FacetCase>& facet) { return facet.param.name; });
+
+TEST(FacetNormalEdgeTest, KeepsTheShadingNormalWhereTheFacetHasNoArea) {
+    const glm::vec3 shading(0.0f, 0.0f, 1.0f);
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const glm::vec3 d(1.0f, 2.0f, 3.0f);
+    EXPECT_EQ(g::gsFacetNormal(glm::vec3(0.0f), glm::vec3(0.0f), shading), shading) << "no derivatives";
+    EXPECT_EQ(g::gsFacetNormal(d, 2.0f * d, shading), shading) << "edge-on: parallel derivatives";
+    EXPECT_EQ(g::gsFacetNormal(1e-39f * d, 1e-39f * glm::vec3(3.0f, 1.0f, 2.0f), shading), shading)
+        << "subnormal derivatives";
+    EXPECT_EQ(g::gsFacetNormal(glm::vec3(inf, 0.0f, 0.0f), d, shading), shading) << "infinite";
+    EXPECT_EQ(g::gsFacetNormal(glm::vec3(nan, 0.0f, 0.0f), d, shading), shading) << "NaN first";
+    EXPECT_EQ(g::gsFacetNormal(d, glm::vec3(0.0f, nan, 0.0f), shading), shading) << "NaN second";
+}
+
 TEST(AutomaticBiasMathTest, NormalOffsetIsZeroFacingTheLightAndTheReachEdgeOn) {
     EXPECT_FLOAT_EQ(g::gsNormalOffset(3.0f, 1.0f), 0.0f);
     EXPECT_FLOAT_EQ(g::gsNormalOffset(3.0f, -1.0f), 0.0f);

@@ -197,23 +197,6 @@ vec3 gsShadowDerivative(mat4 m, vec4 clip, vec3 d) {
 #endif
 }
 
-// The receiver's own facet, on the side the camera sees: with window x right and y up, dP/dx × dP/dy faces the
-// viewer (the derivatives of the interpolated position stay within one triangle). The depths in the map come
-// from facets; an interpolated normal bends across creases, and real models' smoothed normals point up to 45°
-// and more through their own facets, so biases along them move lookups behind the surface. The derivatives
-// are rescaled before the cross product so that a tiny scene's does not underflow; an edge-on facet (no area
-// on screen) keeps `shadingNormal`.
-vec3 gsFacetNormal(vec3 dPdx, vec3 dPdy, vec3 shadingNormal) {
-    vec3 magnitude = max(abs(dPdx), abs(dPdy));
-    float scale = max(max(magnitude.x, magnitude.y), magnitude.z);
-    if (!(scale > 0.0) || isinf(scale)) {
-        return shadingNormal;
-    }
-    vec3 facet = cross(dPdx / scale, dPdy / scale);
-    float area = length(facet);
-    return area > 1e-12 ? facet / area : shadingNormal;
-}
-
 // The screen derivatives a fragment's lookups need, taken once before any per-fragment choice of map.
 struct GsShadowFragment {
     vec3 position;

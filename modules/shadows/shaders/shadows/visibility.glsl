@@ -40,6 +40,26 @@ float gsNormalOffset(float reach, float cosine) {
     return reach * sqrt(max(1.0f - c * c, 0.0f));
 }
 
+// The receiver's own facet, on the side the camera sees: with window x right and y up, dP/dx × dP/dy faces the
+// viewer (the derivatives of the interpolated position stay within one triangle). The depths in the map come
+// from facets; an interpolated normal bends across creases, and real models' smoothed normals point up to 45°
+// and more through their own facets, so biases along them move lookups behind the surface. The derivatives
+// are rescaled to a largest component of 1 before the cross product, so that a tiny scene's does not
+// underflow; an edge-on facet (no area on screen), and derivatives below the smallest normal float (which GPUs
+// may flush to zero, and whose reciprocal overflows), keep `shadingNormal`. One reciprocal and one inverse
+// square root rather than nine divisions and a square root.
+vec3 gsFacetNormal(vec3 dPdx, vec3 dPdy, vec3 shadingNormal) {
+    vec3 magnitude = max(abs(dPdx), abs(dPdy));
+    float scale = max(max(magnitude.x, magnitude.y), magnitude.z);
+    if (!(scale >= 1.17549435e-38f) || isinf(scale)) {
+        return shadingNormal;
+    }
+    float inverseScale = 1.0f / scale;
+    vec3 facet = cross(dPdx * inverseScale, dPdy * inverseScale);
+    float area2 = dot(facet, facet);
+    return area2 > 1e-24f ? facet * inversesqrt(area2) : shadingNormal;
+}
+
 // Adaptive depth bias (Dou, Yan, Kerzner, Dai, Wyman, "Adaptive Depth Bias for Shadow Maps", JCGT 3(4), 2014,
 // section 3): the receiver's tangent plane (through `position`, normal `normal`) seen in the shadow map. A
 // projective map takes planes to planes, so the plane's map depth is exactly affine in the map's coordinates,
