@@ -4,7 +4,6 @@
 
 #include <engine/FrameContext.h>
 #include <engine/MeshData.h>
-#include <engine/Module.h>
 
 #include <glm/glm.hpp>
 

@@ -134,6 +134,7 @@ void ShadowModule::releaseResources() {
     allocation_.reset();
     uploadedFrame_.clear();
     drawnFrom_.reset();
+    reusedMaps_ = false;
 }
 
 MapAllocator& ShadowModule::allocation() {
