@@ -27,6 +27,16 @@ engine::Scene boxOnPlaneSeenFromAbove(engine::EntityId& camera) {
     return scene;
 }
 
+/// The same under a sun.
+engine::Scene boxOnPlaneUnderASun() {
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
+    const auto sun = scene.create("sun");
+    scene.entity(sun).light = engine::LightComponent{};
+    scene.entity(sun).transform = engine::Transform::lookAt({-2, 5, 1}, {0, 0, 0});
+    return scene;
+}
+
 content::LoadedScene knob(engine::LightType lightType) {
     content::SceneLoadOptions options;
     options.subdivisionLevel = 2; // enough curvature, fewer triangles for the 100+ renders below
@@ -197,11 +207,8 @@ TEST(ShadowModuleGLTest, DebugViewsCompileAndDiffer) {
 
 TEST(ShadowModuleGLTest, ADirectionalMapTakesTheSideItsViewNeeds) {
     glTestContext();
-    engine::EntityId camera = engine::kNoEntity;
-    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
-    const auto sun = scene.create("sun");
-    scene.entity(sun).light = engine::LightComponent{};
-    scene.entity(sun).transform = engine::Transform::lookAt({-2, 5, 1}, {0, 0, 0});
+    engine::Scene scene = boxOnPlaneUnderASun();
+    const engine::EntityId camera = *scene.firstCamera();
     engine::Engine engine;
     ShadowSettings settings;
     settings.cascadeCount = 1;
@@ -242,20 +249,12 @@ struct MapInputChange {
 
 class KeptMapsGLTest : public ::testing::TestWithParam<MapInputChange> {};
 
-/// The box on its plane under a sun, as the visibility debug view at `size`, rendered with `module`'s engine.
+/// What `engine` renders of `scene` at `size` (RGBA floats; the visibility debug view where its module shows
+/// it).
 std::vector<float> visibilityImage(engine::Engine& engine, const engine::Scene& scene, glm::ivec2 size) {
     engine::RenderTarget target(size, engine::ColorFormat::Rgba32F);
     engine.renderFrame(scene, *scene.firstCamera(), target);
     return target.readPixelsFloat();
-}
-
-engine::Scene boxOnPlaneUnderASun() {
-    engine::EntityId camera = engine::kNoEntity;
-    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
-    const auto sun = scene.create("sun");
-    scene.entity(sun).light = engine::LightComponent{};
-    scene.entity(sun).transform = engine::Transform::lookAt({-2, 5, 1}, {0, 0, 0});
-    return scene;
 }
 
 TEST_P(KeptMapsGLTest, AStillViewKeepsItsMapsUntilWhatTheyAreDrawnFromChanges) {

@@ -34,10 +34,7 @@ struct MapInputs {
     std::vector<engine::FrameLight> lights;
     std::vector<Mesh> meshes;
 
-    bool operator==(const MapInputs& other) const {
-        return fit.view == other.fit.view && fit.projection == other.fit.projection &&
-               targetSize == other.targetSize && lights == other.lights && meshes == other.meshes;
-    }
+    bool operator==(const MapInputs&) const = default;
 };
 
 } // namespace shadows

@@ -69,6 +69,9 @@ struct FitView {
     glm::mat4 view{1.0f};
     /// View → clip space.
     glm::mat4 projection{1.0f};
+
+    /// @brief Field-wise (exact) equality.
+    bool operator==(const FitView&) const = default;
 };
 
 /// @brief Most cascades a directional light can have (ShadowSettings::cascadeCount).
