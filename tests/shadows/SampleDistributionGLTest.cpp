@@ -40,6 +40,10 @@ public:
         samples.emplace();
         bounds = samples->measure(*host_, frame, FitView{frame.view, frame.projection},
                                   lightView(kSunDirection), 0.9f, 0.1f);
+        whole = bounds;
+        if (bounds) {
+            samples->measureCascadeSlices(*host_, *bounds);
+        }
         depth = samples->readDepth();
         size = samples->size();
         view = frame.view;
@@ -48,6 +52,7 @@ public:
 
     std::optional<VisibleSamples> samples;
     std::optional<VisibleSamples::Bounds> bounds;
+    std::optional<VisibleSamples::Bounds> whole; // measure's result alone, before the cascades' slices
     std::vector<float> depth;
     glm::ivec2 size{0};
     glm::mat4 view{1.0f};
@@ -127,6 +132,19 @@ TEST(SampleDistributionGLTest, TheGpuReductionEqualsItsCpuMirror) {
                 EXPECT_NEAR(gpu.max[axis], cpu.max[axis], tolerance) << s << " axis " << axis;
             }
         }
+    }
+    // measure alone reduced the range and slice 0 in its one pass, the same as with the cascades' slices,
+    // and left those empty.
+    ASSERT_TRUE(probe.whole);
+    EXPECT_FALSE(probe.whole->cascadeSlices);
+    EXPECT_TRUE(probe.bounds->cascadeSlices);
+    EXPECT_EQ(probe.whole->viewDepth, probe.bounds->viewDepth);
+    EXPECT_EQ(probe.whole->slices[0].samples, probe.bounds->slices[0].samples);
+    EXPECT_EQ(probe.whole->slices[0].min, probe.bounds->slices[0].min);
+    EXPECT_EQ(probe.whole->slices[0].max, probe.bounds->slices[0].max);
+    for (std::size_t s = 1; s < rects.size(); ++s) {
+        EXPECT_TRUE(probe.whole->slices[s].empty()) << s;
+        EXPECT_FALSE(probe.bounds->slices[s].empty() && !rects[s].empty()) << s;
     }
     std::cout << "[ measured ] reduction of " << probe.size.x << "x" << probe.size.y << ": view depths "
               << probe.bounds->viewDepth.x << ".." << probe.bounds->viewDepth.y << ", " << samples

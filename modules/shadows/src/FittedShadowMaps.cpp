@@ -39,8 +39,8 @@ SoftMargin FittedShadowMaps::softMargin(const engine::FrameLight& light) const {
 bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
                                            bool sizeToView, std::vector<MapSlot>& slots,
                                            LightMapsBlock& maps) {
-    const auto bounds = samples_.measure(host_, frame.frame, frame.fit, lightView(light.direction),
-                                         settings_.cascadeSplitWeight, settings_.cascadeBlend);
+    auto bounds = samples_.measure(host_, frame.frame, frame.fit, lightView(light.direction),
+                                   settings_.cascadeSplitWeight, settings_.cascadeBlend);
     if (!bounds) {
         if (!warnings_.noSamples) {
             std::cerr
@@ -54,18 +54,28 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     const Aabb shadowable =
         shadowableRegion(light.direction, frame.fit.projection * frame.fit.view, frame.boxes);
     std::array<LightRect, kSampleSlices> slices{};
-    for (std::size_t s = 0; s < slices.size(); ++s) {
-        slices[s] = clippedTo(bounds->slices[s], shadowable);
+    slices[0] = clippedTo(bounds->slices[0], shadowable);
+    // The cascades' slices only where more than one map may be drawn.
+    const int imageHeight = frame.frame.target.size.y;
+    const bool oneMap =
+        settings_.cascadeCount == 1 ||
+        (settings_.cascadeCount == 0 && oneMapResolvesView(slices, bounds->sliceDepths, settings_.resolution,
+                                                           frame.fit.projection, imageHeight));
+    if (!oneMap) {
+        samples_.measureCascadeSlices(host_, *bounds);
+        for (std::size_t s = 1; s < slices.size(); ++s) {
+            slices[s] = clippedTo(bounds->slices[s], shadowable);
+        }
     }
-    const int count = settings_.cascadeCount > 0
-                          ? settings_.cascadeCount
-                          : densityCascadeCount(slices, bounds->sliceDepths, settings_.resolution,
-                                                frame.fit.projection, frame.frame.target.size.y);
+    const int count = settings_.cascadeCount > 0 ? settings_.cascadeCount
+                      : oneMap                   ? 1
+                               : densityCascadeCount(slices, bounds->sliceDepths, settings_.resolution,
+                                                     frame.fit.projection, imageHeight);
     const float hardMargin = plan_.kernelReachTexels - plan_.softReachTexels;
     const int resolution =
         sizeToView ? viewResolution(slices, bounds->sliceDepths, count, settings_.resolution, hardMargin,
                                     settings_.fittedTexelPixels / (1.0f + 2.0f * plan_.filterRadiusTexels),
-                                    frame.fit.projection, frame.frame.target.size.y)
+                                    frame.fit.projection, imageHeight)
                    : settings_.resolution;
     const auto fitted = [&](int cascade) {
         return fitToSamples(light.direction,

@@ -136,10 +136,19 @@ int viewResolution(const std::array<LightRect, kSampleSlices>& rects,
     return std::min(side, resolution);
 }
 
+bool oneMapResolvesView(const std::array<LightRect, kSampleSlices>& rects,
+                        const std::array<glm::vec2, kSampleSlices>& sliceDepths, int resolution,
+                        const glm::mat4& projection, int imageHeight) {
+    return sliceTexelsPerPixel(rects[0], sliceDepths[0].x, resolution, projection, imageHeight) <= 1.0f;
+}
+
 int densityCascadeCount(const std::array<LightRect, kSampleSlices>& rects,
                         const std::array<glm::vec2, kSampleSlices>& sliceDepths, int resolution,
                         const glm::mat4& projection, int imageHeight) {
-    for (int count = 1; count < kMaxCascades; ++count) {
+    if (oneMapResolvesView(rects, sliceDepths, resolution, projection, imageHeight)) {
+        return 1;
+    }
+    for (int count = 2; count < kMaxCascades; ++count) {
         bool fine = true;
         for (int cascade = 0; cascade < count && fine; ++cascade) {
             const auto s = static_cast<std::size_t>(sampleSliceIndex(count, cascade));

@@ -15,8 +15,6 @@ namespace shadows {
 namespace {
 
 const engine::ProgramDesc kSampleDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
-constexpr int kSliceWords = 7;
-constexpr std::size_t kBoundsWords = 2 + kSampleSlices * kSliceWords;
 
 /// The float an order-preserving word of samples.comp (gsOrderedBits) stands for.
 float fromOrderedBits(std::uint32_t word) {
@@ -24,8 +22,25 @@ float fromOrderedBits(std::uint32_t word) {
     return std::bit_cast<float>(bits);
 }
 
-/// The buffer's starting values: minima all ones (above every float), maxima and counts zero.
-std::array<std::uint32_t, kBoundsWords> clearedBounds() {
+} // namespace
+
+const engine::gl::Program& VisibleSamples::reduction(engine::ModuleHost& host, Reduction pass) {
+    std::unique_ptr<engine::gl::Program>& program =
+        pass == Reduction::Whole ? wholeProgram_ : cascadeSlicesProgram_;
+    if (!program) {
+        const std::string define =
+            pass == Reduction::Whole ? "GS_SAMPLES_WHOLE" : "GS_SAMPLES_CASCADE_SLICES";
+        const std::vector<std::string> defines{"#define " + define};
+        const std::array stages{
+            host.shaders().preprocess(GL_COMPUTE_SHADER, "shadows/samples.comp", defines)};
+        program = std::make_unique<engine::gl::Program>("shadows/samples.comp [" + define + "]", stages);
+    }
+    return *program;
+}
+
+std::array<std::uint32_t, VisibleSamples::kBoundsWords>
+VisibleSamples::reduce(const engine::gl::Program& program) {
+    // Minima start at all ones (above every float), maxima and counts at zero.
     std::array<std::uint32_t, kBoundsWords> words{};
     words[0] = 0xffffffffu;
     for (int s = 0; s < kSampleSlices; ++s) {
@@ -33,21 +48,25 @@ std::array<std::uint32_t, kBoundsWords> clearedBounds() {
             words[2 + static_cast<std::size_t>(s * kSliceWords + axis)] = 0xffffffffu;
         }
     }
-    return words;
-}
-
-} // namespace
-
-const engine::gl::Program& VisibleSamples::reduction(engine::ModuleHost& host, bool depthRange) {
-    std::unique_ptr<engine::gl::Program>& program = depthRange ? depthRangeProgram_ : lightRectsProgram_;
-    if (!program) {
-        const std::string pass = depthRange ? "GS_SAMPLES_DEPTH_RANGE" : "GS_SAMPLES_LIGHT_RECTS";
-        const std::vector<std::string> defines{"#define " + pass};
-        const std::array stages{
-            host.shaders().preprocess(GL_COMPUTE_SHADER, "shadows/samples.comp", defines)};
-        program = std::make_unique<engine::gl::Program>("shadows/samples.comp [" + pass + "]", stages);
+    if (!bounds_) {
+        bounds_.emplace(kBoundsWords * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
-    return *program;
+    bounds_->update(0, sizeof(words), words.data());
+    program.use();
+    program.set("uDepth", 0);
+    program.set("uSize", size_);
+    program.set("uTexelToLight", texelToLight_);
+    glUniform4fv(program.uniformLocation("uTexelToViewDepth"), 1, glm::value_ptr(texelToViewDepth_));
+    glBindTextureUnit(0, depth_->id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bounds_->id());
+    // 8x8 invocations a group, each reducing a 16x16 block of texels (samples.comp's GS_BLOCK).
+    constexpr int kGroupTexels = 8 * 16;
+    const glm::ivec2 groups = (size_ + glm::ivec2(kGroupTexels - 1)) / kGroupTexels;
+    glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(bounds_->id(), 0, sizeof(words), words.data());
+    glUseProgram(0);
+    return words;
 }
 
 void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit) {
@@ -89,53 +108,51 @@ std::optional<VisibleSamples::Bounds>
 VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit,
                         const glm::mat4& worldToLight, float weight, float blend) {
     draw(host, frame, fit);
-    if (!bounds_) {
-        bounds_.emplace(kBoundsWords * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    // Window texel (x, y, depth) to clip space, then to world and on to the light's view, in double so the
+    // products lose nothing the float steps would. The light's view is affine: its last row keeps the world
+    // point's w, which then divides the light-space and view-depth results alike.
+    glm::dmat4 texelToClip(1.0);
+    texelToClip[0][0] = 2.0 / size_.x;
+    texelToClip[1][1] = 2.0 / size_.y;
+    texelToClip[2][2] = 2.0;
+    texelToClip[3] = glm::dvec4(1.0 / size_.x - 1.0, 1.0 / size_.y - 1.0, -1.0, 1.0);
+    const glm::dmat4 texelToWorld =
+        glm::inverse(glm::dmat4(fit.projection) * glm::dmat4(fit.view)) * texelToClip;
+    const glm::dmat4 toLight = glm::dmat4(worldToLight) * texelToWorld;
+    const glm::dmat4 toView = glm::dmat4(fit.view) * texelToWorld;
+    texelToLight_ = glm::mat4(toLight);
+    for (int column = 0; column < 4; ++column) {
+        texelToViewDepth_[column] = static_cast<float>(-toView[column][2]);
     }
-    const glm::mat4 viewProjection = fit.projection * fit.view;
 
-    // 8x8 invocations a group, each reducing a 16x16 block of texels (samples.comp's GS_BLOCK).
-    constexpr int kGroupTexels = 8 * 16;
-    const glm::ivec2 groups = (size_ + glm::ivec2(kGroupTexels - 1)) / kGroupTexels;
-    const glm::mat4 clipToWorld = glm::inverse(viewProjection);
-    std::array<std::uint32_t, kBoundsWords> words = clearedBounds();
-    const auto run = [&](const engine::gl::Program& program) {
-        bounds_->update(0, sizeof(words), words.data());
-        program.use();
-        program.set("uDepth", 0);
-        program.set("uSize", size_);
-        glBindTextureUnit(0, depth_->id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bounds_->id());
-        glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        glGetNamedBufferSubData(bounds_->id(), 0, sizeof(words), words.data());
-    };
-
-    const engine::gl::Program& depthRange = reduction(host, true);
-    depthRange.use();
-    depthRange.set("uClipToView", glm::inverse(fit.projection));
-    run(depthRange);
+    const std::array<std::uint32_t, kBoundsWords> words = reduce(reduction(host, Reduction::Whole));
     Bounds result;
     result.viewDepth = {fromOrderedBits(words[0]), fromOrderedBits(words[1])};
     if (words[1] == 0u || !std::isfinite(result.viewDepth.x) || !std::isfinite(result.viewDepth.y) ||
         !(result.viewDepth.x > 0.0f) || !(result.viewDepth.y >= result.viewDepth.x)) {
         return std::nullopt;
     }
-
     // The slices' bounds come from the CPU, so the GPU and its mirror assign every sample alike.
     result.sliceDepths = sampleSliceDepths(result.viewDepth, weight, blend);
-    const engine::gl::Program& lightRects = reduction(host, false);
-    lightRects.use();
-    lightRects.set("uClipToWorld", clipToWorld);
-    lightRects.set("uWorldToView", fit.view);
-    lightRects.set("uWorldToLight", worldToLight);
-    glUniform2fv(lightRects.uniformLocation("uSliceDepths"), kSampleSlices,
-                 glm::value_ptr(result.sliceDepths.front()));
-    words = clearedBounds();
-    run(lightRects);
-    for (int s = 0; s < kSampleSlices; ++s) {
+    readSlices(words, 0, 1, result);
+    return result;
+}
+
+void VisibleSamples::measureCascadeSlices(engine::ModuleHost& host, Bounds& bounds) {
+    const engine::gl::Program& program = reduction(host, Reduction::CascadeSlices);
+    program.use();
+    glUniform2fv(program.uniformLocation("uSliceDepths"), kSampleSlices,
+                 glm::value_ptr(bounds.sliceDepths.front()));
+    readSlices(reduce(program), 1, kSampleSlices, bounds);
+    bounds.cascadeSlices = true;
+}
+
+void VisibleSamples::readSlices(const std::array<std::uint32_t, kBoundsWords>& words, int first, int end,
+                                Bounds& bounds) {
+    for (int s = first; s < end; ++s) {
         const std::size_t base = 2 + static_cast<std::size_t>(s * kSliceWords);
-        LightRect& rect = result.slices[static_cast<std::size_t>(s)];
+        LightRect& rect = bounds.slices[static_cast<std::size_t>(s)];
+        rect = {};
         rect.samples = words[base + 6];
         if (rect.samples > 0) {
             rect.min = {fromOrderedBits(words[base]), fromOrderedBits(words[base + 1]),
@@ -144,8 +161,6 @@ VisibleSamples::measure(engine::ModuleHost& host, const engine::FrameContext& fr
                         fromOrderedBits(words[base + 5])};
         }
     }
-    glUseProgram(0);
-    return result;
 }
 
 std::vector<float> VisibleSamples::readDepth() const {

@@ -9,6 +9,8 @@
 #include <engine/gl/Program.h>
 #include <engine/gl/Texture.h>
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -18,7 +20,9 @@ namespace shadows {
 /// @brief What the camera sees, for Sample Distribution Shadow Maps: a depth-only pass of the view at the
 /// frame's size, reduced on the GPU (shaders/shadows/samples.comp) to the visible samples' view-depth range
 /// and the light-space box of the samples in each candidate cascade slice. Drawn and read back within the
-/// frame, before the shadow maps: no latency, so a camera cut fits the new view at once.
+/// frame, before the shadow maps: no latency, so a camera cut fits the new view at once. The reduction is
+/// the larger part of the sample pass's cost on a software rasteriser, and the cascades' nine slices most of
+/// it, so they are measured only when asked for.
 class VisibleSamples {
 public:
     /// @brief The reduction of one frame.
@@ -26,15 +30,22 @@ public:
         glm::vec2 viewDepth{0.0f};
         std::array<glm::vec2, kSampleSlices> sliceDepths{};
         std::array<LightRect, kSampleSlices> slices{};
+        /// Whether the cascades' slices (1 on) were measured (measureCascadeSlices); else only slice 0, the
+        /// whole range's, was, and the others are empty.
+        bool cascadeSlices = false;
     };
 
     /// @brief Draws the view of `fit` over `frame.scene` into the sample depth image (reallocated when the
-    /// frame's size changes) and reduces it for a light whose maps use `worldToLight`, with the cascade split
-    /// scheme's `weight` and `blend`. nullopt when no sample holds a surface or their depths are not finite
-    /// (an empty view, a degenerate projection). Leaves the frame's framebuffer and viewport bound.
+    /// frame's size changes) and reduces it for a light whose maps use `worldToLight` (affine), with the
+    /// cascade split scheme's `weight` and `blend`: the view-depth range, the slices' depths and slice 0's
+    /// box, in one pass. nullopt when no sample holds a surface or their depths are not finite (an empty
+    /// view, a degenerate projection). Leaves the frame's framebuffer and viewport bound.
     std::optional<Bounds> measure(engine::ModuleHost& host, const engine::FrameContext& frame,
                                   const FitView& fit, const glm::mat4& worldToLight, float weight,
                                   float blend);
+    /// @brief Reduces the cascades' slices (1 on) of `bounds`, the last measure's result, from the same depth
+    /// image, view and light, and sets `bounds.cascadeSlices`.
+    void measureCascadeSlices(engine::ModuleHost& host, Bounds& bounds);
 
     /// @brief Draws the view of `fit` over `frame.scene` into the sample depth image only (what measure does
     /// first; virtual maps mark their pages from it). Leaves the frame's framebuffer and viewport bound.
@@ -48,15 +59,29 @@ public:
     [[nodiscard]] glm::ivec2 size() const { return size_; }
 
 private:
-    const engine::gl::Program& reduction(engine::ModuleHost& host, bool depthRange);
+    // The bounds buffer (samples.comp's GsSampleBounds): the depth range, then per slice min x, y, z, max x,
+    // y, z and the sample count.
+    static constexpr int kSliceWords = 7;
+    static constexpr std::size_t kBoundsWords = 2 + kSampleSlices * kSliceWords;
+    enum class Reduction { Whole, CascadeSlices };
+    const engine::gl::Program& reduction(engine::ModuleHost& host, Reduction pass);
+    /// Runs `program` over the depth image into the bounds buffer, starting from cleared words; returns them.
+    std::array<std::uint32_t, kBoundsWords> reduce(const engine::gl::Program& program);
+    /// Slices [first, end) of `bounds` from the buffer's words.
+    static void readSlices(const std::array<std::uint32_t, kBoundsWords>& words, int first, int end,
+                           Bounds& bounds);
 
     glm::ivec2 size_{0};
     std::optional<engine::gl::Texture> depth_;
     std::optional<engine::gl::Framebuffer> framebuffer_;
     std::optional<engine::gl::Buffer> bounds_;
+    // The last measure's window texel (x, y, depth, 1) to light space (homogeneous, w the world point's) and
+    // to the view depth over that w.
+    glm::mat4 texelToLight_{1.0f};
+    glm::vec4 texelToViewDepth_{0.0f};
     // Compiled on first use: only directional lights fitted to samples need them.
-    std::unique_ptr<engine::gl::Program> depthRangeProgram_;
-    std::unique_ptr<engine::gl::Program> lightRectsProgram_;
+    std::unique_ptr<engine::gl::Program> wholeProgram_;
+    std::unique_ptr<engine::gl::Program> cascadeSlicesProgram_;
 };
 
 } // namespace shadows

@@ -19,8 +19,10 @@ namespace shadows {
 /// (shaders/shadows/samples.comp); these functions are its CPU mirror and the rules the fit applies to the
 /// result.
 
-/// @brief Candidate slices the reduction measures at once: every cascade of every count 1..kMaxCascades
-/// (1 + 2 + 3 + 4), so the count can be chosen from the result without a second pass.
+/// @brief Candidate slices: every cascade of every count 1..kMaxCascades (1 + 2 + 3 + 4), so the count can be
+/// chosen from the result. The reduction measures slice 0 (one map over the whole range) with the depth
+/// range, and the other nine in a second pass only where one map does not resolve the view
+/// (oneMapResolvesView).
 inline constexpr int kSampleSlices = kMaxCascades * (kMaxCascades + 1) / 2;
 
 /// @brief Slice index of cascade `cascade` (0-based) when the light has `count` cascades.
@@ -87,6 +89,12 @@ sampleLightRects(std::span<const float> depth, glm::ivec2 size, const glm::mat4&
                                  const std::array<glm::vec2, kSampleSlices>& sliceDepths, int count,
                                  int resolution, float marginTexels, float texelPixels,
                                  const glm::mat4& projection, int imageHeight);
+
+/// @brief Whether one map of `resolution`² over slice 0 (`rects[0]`, the whole range) has sliceTexelsPerPixel
+/// <= 1 at its near depth: densityCascadeCount's first test, which needs no other slice.
+[[nodiscard]] bool oneMapResolvesView(const std::array<LightRect, kSampleSlices>& rects,
+                                      const std::array<glm::vec2, kSampleSlices>& sliceDepths, int resolution,
+                                      const glm::mat4& projection, int imageHeight);
 
 /// @brief The fewest cascades (1..kMaxCascades) whose slices each have sliceTexelsPerPixel <= 1 at their
 /// near depth, or kMaxCascades when none does. Empty slices (no sample) need no map and pass.

@@ -1,9 +1,9 @@
 #version 450 core
 // The reduction of Sample Distribution Shadow Maps (Lauritzen, Salvi, Lefohn, I3D 2011, section 3): the
-// visible samples of a depth image, reduced to their view-depth range (GS_SAMPLES_DEPTH_RANGE) or to the
-// light-space box of the samples in each candidate slice (GS_SAMPLES_LIGHT_RECTS). The CPU mirror is
-// shadows::sampleDepthRange / sampleLightRects; floats are reduced as order-preserving unsigned integers,
-// first within a work group in shared memory, then once per group in the buffer.
+// visible samples of a depth image, reduced to their view-depth range and to the light-space box of the samples
+// in each candidate slice. The CPU mirror is shadows::sampleDepthRange / sampleLightRects; floats are reduced
+// as order-preserving unsigned integers, first within a work group in shared memory, then once per group in the
+// buffer.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 const int GS_SAMPLE_SLICES = 10;
@@ -12,10 +12,10 @@ const int GS_SLICE_WORDS = 7;
 
 layout(binding = 0) uniform sampler2D uDepth;
 uniform ivec2 uSize;
-uniform mat4 uClipToView;
-uniform mat4 uClipToWorld;
-uniform mat4 uWorldToView;
-uniform mat4 uWorldToLight;
+// Window texel (x, y, depth, 1) to the light's view space, homogeneous (VisibleSamples: clip to world and world
+// to light in one matrix, w the world point's), and to the view depth's numerator over that w.
+uniform mat4 uTexelToLight;
+uniform vec4 uTexelToViewDepth;
 uniform vec2 uSliceDepths[GS_SAMPLE_SLICES];
 
 layout(std430, binding = 0) buffer GsSampleBounds {
@@ -23,13 +23,22 @@ layout(std430, binding = 0) buffer GsSampleBounds {
     uint slices[GS_SAMPLE_SLICES * GS_SLICE_WORDS];
 };
 
-#if defined(GS_SAMPLES_DEPTH_RANGE)
-shared uint groupWords[2];
-const int GS_GROUP_WORDS = 2;
+// GS_SAMPLES_WHOLE reduces the view-depth range and slice 0, the whole range's (every sample: its ends are
+// widened past rounding, sampleSliceDepths); GS_SAMPLES_CASCADE_SLICES the other slices, which only a view
+// that one map cannot resolve needs. The group's words: the buffer's, from GS_FIRST_WORD.
+#if defined(GS_SAMPLES_WHOLE)
+const int GS_FIRST_SLICE = 0;
+const int GS_LAST_SLICE = 0;
+const int GS_FIRST_WORD = 0;
+const int GS_GROUP_WORDS = 2 + GS_SLICE_WORDS;
 #else
-shared uint groupWords[GS_SAMPLE_SLICES * GS_SLICE_WORDS];
-const int GS_GROUP_WORDS = GS_SAMPLE_SLICES * GS_SLICE_WORDS;
+const int GS_FIRST_SLICE = 1;
+const int GS_LAST_SLICE = GS_SAMPLE_SLICES - 1;
+const int GS_FIRST_WORD = 2 + GS_SLICE_WORDS;
+const int GS_GROUP_WORDS = (GS_SAMPLE_SLICES - 1) * GS_SLICE_WORDS;
 #endif
+const int GS_SLICE_COUNT = GS_LAST_SLICE - GS_FIRST_SLICE + 1;
+shared uint groupWords[GS_GROUP_WORDS];
 
 // IEEE floats ordered as unsigned integers: negative ones reversed below the positive ones.
 uint gsOrderedBits(float value) {
@@ -37,39 +46,37 @@ uint gsOrderedBits(float value) {
     return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
 }
 
-// Whether word `i` of a bounds record holds a minimum (initialised to all ones) rather than a maximum or count.
-bool gsIsMinimumWord(int i) {
-#if defined(GS_SAMPLES_DEPTH_RANGE)
-    return i == 0;
-#else
-    return i % GS_SLICE_WORDS < 3;
-#endif
+// What buffer word `word` holds: 0 a minimum (initialised to all ones), 1 a maximum, 2 a count.
+int gsWordKind(int word) {
+    if (word < 2) {
+        return word;
+    }
+    int inSlice = (word - 2) % GS_SLICE_WORDS;
+    return inSlice < 3 ? 0 : inSlice < 6 ? 1 : 2;
 }
 
 // Each invocation reduces a block of GS_BLOCK x GS_BLOCK texels in registers first: shared-memory atomics are
-// slow on a software rasteriser, and an invocation's set of them (seventy for the slices) costs as much as many
-// texels' arithmetic, so a block of 256 shares one set. VisibleSamples dispatches groups of 8x8 invocations.
+// slow on a software rasteriser, and an invocation's set of them (sixty-three for the cascades' slices) costs
+// as much as many texels' arithmetic, so a block of 256 shares one set. VisibleSamples dispatches groups of
+// 8x8 invocations.
 const int GS_BLOCK = 16;
 
 void main() {
     uint local = gl_LocalInvocationIndex;
     for (int i = int(local); i < GS_GROUP_WORDS; i += 64) {
-        groupWords[i] = gsIsMinimumWord(i) ? 0xffffffffu : 0u;
+        groupWords[i] = gsWordKind(GS_FIRST_WORD + i) == 0 ? 0xffffffffu : 0u;
     }
     barrier();
-#if defined(GS_SAMPLES_DEPTH_RANGE)
     float nearest = 3.0e38;
     float farthest = -3.0e38;
-#else
-    vec3 low[GS_SAMPLE_SLICES];
-    vec3 high[GS_SAMPLE_SLICES];
-    uint count[GS_SAMPLE_SLICES];
-    for (int s = 0; s < GS_SAMPLE_SLICES; ++s) {
+    vec3 low[GS_SLICE_COUNT];
+    vec3 high[GS_SLICE_COUNT];
+    uint count[GS_SLICE_COUNT];
+    for (int s = 0; s < GS_SLICE_COUNT; ++s) {
         low[s] = vec3(3.0e38);
         high[s] = vec3(-3.0e38);
         count[s] = 0u;
     }
-#endif
     ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * GS_BLOCK;
     for (int dy = 0; dy < GS_BLOCK; ++dy) {
         for (int dx = 0; dx < GS_BLOCK; ++dx) {
@@ -81,36 +88,38 @@ void main() {
             if (!(depth < 1.0 && depth >= 0.0)) { // 1 is the cleared far plane: no surface
                 continue;
             }
-            vec4 clip = vec4((vec2(texel) + 0.5) / vec2(uSize) * 2.0 - 1.0, 2.0 * depth - 1.0, 1.0);
-#if defined(GS_SAMPLES_DEPTH_RANGE)
-            vec4 view = uClipToView * clip;
-            float viewDepth = -view.z / view.w;
+            vec4 window = vec4(vec2(texel), depth, 1.0);
+            vec4 light = uTexelToLight * window;
+            float perW = 1.0 / light.w;
+            vec3 point = light.xyz * perW;
+            float viewDepth = dot(uTexelToViewDepth, window) * perW;
+#if defined(GS_SAMPLES_WHOLE)
             nearest = min(nearest, viewDepth);
             farthest = max(farthest, viewDepth);
+            low[0] = min(low[0], point);
+            high[0] = max(high[0], point);
+            count[0] += 1u;
 #else
-            vec4 world = uClipToWorld * clip;
-            vec4 point = vec4(world.xyz / world.w, 1.0);
-            float viewDepth = -(uWorldToView * point).z;
-            vec3 light = (uWorldToLight * point).xyz;
-            for (int s = 0; s < GS_SAMPLE_SLICES; ++s) {
-                if (viewDepth >= uSliceDepths[s].x && viewDepth <= uSliceDepths[s].y) {
-                    low[s] = min(low[s], light);
-                    high[s] = max(high[s], light);
+            for (int s = 0; s < GS_SLICE_COUNT; ++s) {
+                vec2 slice = uSliceDepths[GS_FIRST_SLICE + s];
+                if (viewDepth >= slice.x && viewDepth <= slice.y) {
+                    low[s] = min(low[s], point);
+                    high[s] = max(high[s], point);
                     count[s] += 1u;
                 }
             }
 #endif
         }
     }
-#if defined(GS_SAMPLES_DEPTH_RANGE)
+#if defined(GS_SAMPLES_WHOLE)
     if (nearest <= farthest) {
         atomicMin(groupWords[0], gsOrderedBits(nearest));
         atomicMax(groupWords[1], gsOrderedBits(farthest));
     }
-#else
-    for (int s = 0; s < GS_SAMPLE_SLICES; ++s) {
+#endif
+    for (int s = 0; s < GS_SLICE_COUNT; ++s) {
         if (count[s] > 0u) {
-            int base = s * GS_SLICE_WORDS;
+            int base = 2 + (GS_FIRST_SLICE + s) * GS_SLICE_WORDS - GS_FIRST_WORD;
             for (int axis = 0; axis < 3; ++axis) {
                 atomicMin(groupWords[base + axis], gsOrderedBits(low[s][axis]));
                 atomicMax(groupWords[base + 3 + axis], gsOrderedBits(high[s][axis]));
@@ -118,24 +127,22 @@ void main() {
             atomicAdd(groupWords[base + 6], count[s]);
         }
     }
-#endif
     barrier();
     for (int i = int(local); i < GS_GROUP_WORDS; i += 64) {
-#if defined(GS_SAMPLES_DEPTH_RANGE)
-        if (i == 0) {
-            atomicMin(depthRange[0], groupWords[0]);
+        int word = GS_FIRST_WORD + i;
+        int kind = gsWordKind(word);
+        if (word < 2) {
+            if (kind == 0) {
+                atomicMin(depthRange[word], groupWords[i]);
+            } else {
+                atomicMax(depthRange[word], groupWords[i]);
+            }
+        } else if (kind == 0) {
+            atomicMin(slices[word - 2], groupWords[i]);
+        } else if (kind == 1) {
+            atomicMax(slices[word - 2], groupWords[i]);
         } else {
-            atomicMax(depthRange[1], groupWords[1]);
+            atomicAdd(slices[word - 2], groupWords[i]);
         }
-#else
-        int word = i % GS_SLICE_WORDS;
-        if (word == 6) {
-            atomicAdd(slices[i], groupWords[i]);
-        } else if (word < 3) {
-            atomicMin(slices[i], groupWords[i]);
-        } else {
-            atomicMax(slices[i], groupWords[i]);
-        }
-#endif
     }
 }
