@@ -1,4 +1,5 @@
 #version 450 core
+// Forward lighting pass and depth pre-pass. Modules inject code at the two vertex slots (docs/MODULES.md).
 #include "frame.glsl"
 
 layout(location = 0) in vec3 inPosition;
@@ -12,9 +13,12 @@ out vec3 vWorldNormal;
 // The depth pre-pass and the lighting pass must produce bit-identical depth for their EQUAL test.
 invariant gl_Position;
 
+#pragma gs_slot(vertex_declarations)
+
 void main() {
     vec4 world = uModel * vec4(inPosition, 1.0);
     vWorldPosition = world.xyz;
     vWorldNormal = uNormalMatrix * inNormal;
     gl_Position = gsViewProjection * world;
+#pragma gs_slot(vertex_outputs)
 }

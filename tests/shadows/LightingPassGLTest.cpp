@@ -1,6 +1,6 @@
 // The lighting pass's lean paths change no image: the early out of receivers facing away from the light, on
-// every map layout (one map, cascades, cube faces) and technique family, and the orthographic lookups of
-// frames whose maps are all directional.
+// every map layout (one map, cascades, cube faces) and technique family, exactly; the orthographic lookups of
+// frames whose maps are all directional, and the vertex stage's projection, within float tolerance.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>
@@ -11,8 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -38,6 +42,8 @@ private:
 struct Shaded {
     engine::Image image;
     bool orthographicVariant = false; // the module asked for GS_SHADOW_ORTHOGRAPHIC
+    bool vertexProjection =
+        false; // a light's layout is one the vertex stage projects (vertex-projection.glsl)
 };
 
 /// The frame with the module's lean paths, or, given `generic`, with the define that restores the code they
@@ -56,7 +62,10 @@ Shaded shaded(const content::LoadedScene& loaded, ShadowSettings settings, const
     const engine::MeshData mesh;
     const engine::ShaderVariantKey bits =
         shadows.variantBits(engine::DrawContext{frame, engine::kNoEntity, mesh});
-    return {target.readPixels(), (bits & engine.variants().flag("GS_SHADOW_ORTHOGRAPHIC")) != 0};
+    const engine::ShaderVariantKey vertexLayouts = engine.variants().flag("GS_SHADOW_LAYOUT_SINGLE") |
+                                                   engine.variants().flag("GS_SHADOW_LAYOUT_CASCADES");
+    return {target.readPixels(), (bits & engine.variants().flag("GS_SHADOW_ORTHOGRAPHIC")) != 0,
+            (bits & vertexLayouts) != 0};
 }
 
 content::LoadedScene loadScene(const std::string& name) {
@@ -74,6 +83,28 @@ void expectSameImage(const engine::Image& lean, const engine::Image& full, const
     }
     EXPECT_EQ(differing, 0u) << what;
     // The comparison means something only where the scene is lit and shadowed.
+    const auto [darkest, brightest] = std::minmax_element(lean.pixels.begin(), lean.pixels.end());
+    EXPECT_GT(*brightest - *darkest, 64) << what;
+}
+
+/// Pixels whose channels differ by more than 2 of 255 between the two images.
+std::size_t differingPixels(const engine::Image& a, const engine::Image& b) {
+    std::size_t differing = 0;
+    for (std::size_t pixel = 0; pixel + 3 < a.pixels.size(); pixel += 4) {
+        bool differs = false;
+        for (std::size_t channel = 0; channel < 3; ++channel) {
+            differs =
+                differs || std::abs(int(a.pixels[pixel + channel]) - int(b.pixels[pixel + channel])) > 2;
+        }
+        differing += differs;
+    }
+    return differing;
+}
+
+/// Within float tolerance: a lookup on a texel's edge may round to its neighbour, a pixel in a thousand.
+void expectSameLookups(const engine::Image& lean, const engine::Image& full, const std::string& what) {
+    ASSERT_EQ(lean.size, full.size);
+    EXPECT_LE(differingPixels(lean, full), lean.pixels.size() / 4 / 1000) << what;
     const auto [darkest, brightest] = std::minmax_element(lean.pixels.begin(), lean.pixels.end());
     EXPECT_GT(*brightest - *darkest, 64) << what;
 }
@@ -127,8 +158,10 @@ TEST_P(OrthographicLookups, ChangesNoImage) {
     const Shaded lean = shaded(loaded, settingsFor(c));
     // Every map of these scenes is a sun's: the variant is the orthographic one.
     EXPECT_TRUE(lean.orthographicVariant) << describe(c);
-    expectSameImage(lean.image, shaded(loaded, settingsFor(c), "GS_SHADOW_KEEP_PERSPECTIVE").image,
-                    describe(c));
+    // The orthographic lookups move a receiver towards the light in depth alone, the generic ones through the
+    // matrix: the same within float tolerance.
+    expectSameLookups(lean.image, shaded(loaded, settingsFor(c), "GS_SHADOW_KEEP_PERSPECTIVE").image,
+                      describe(c));
 }
 
 TEST(OrthographicVariant, NotForPerspectiveMaps) {
@@ -139,7 +172,71 @@ TEST(OrthographicVariant, NotForPerspectiveMaps) {
     EXPECT_FALSE(shaded(loaded, settings).orthographicVariant);
 }
 
+struct ProjectionCase {
+    std::string name;
+    std::string scene;
+    ShadowTechnique technique;
+    int cascadeCount = 0;
+    bool addSun = false; // a low sun beside the scene's own lights: its map is projected in the vertex stage
+};
+
+void PrintTo(const ProjectionCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+void addLowSun(content::LoadedScene& loaded) {
+    const engine::EntityId sun = loaded.scene.create("vertex-projection sun");
+    engine::Entity& entity = loaded.scene.entity(sun);
+    entity.transform.rotation =
+        glm::quatLookAt(glm::normalize(glm::vec3(0.6f, -0.45f, -0.5f)), glm::vec3(0, 1, 0));
+    entity.light = engine::LightComponent{};
+    entity.light->intensity = 2.0f;
+}
+
+class VertexProjection : public ::testing::TestWithParam<ProjectionCase> {};
+
+// The debug views of the lookups (the texel grid under each pixel, the map's depth there, the visibility)
+// agree with the fragment stage's projection.
+TEST_P(VertexProjection, SameLookupsAsFragmentStage) {
+    glTestContext();
+    const ProjectionCase& c = GetParam();
+    content::LoadedScene loaded = loadScene(c.scene);
+    if (c.addSun) {
+        addLowSun(loaded);
+    }
+    for (const ShadowDebugView view :
+         {ShadowDebugView::TexelCheckerboard, ShadowDebugView::ShadowMap, ShadowDebugView::Visibility}) {
+        ShadowSettings settings;
+        settings.technique = c.technique;
+        settings.resolution = 512;
+        settings.cascadeCount = c.cascadeCount;
+        settings.debugView = view;
+        const std::string what = c.name + " " + std::string(toString(view));
+        const Shaded vertex = shaded(loaded, settings);
+        EXPECT_TRUE(vertex.vertexProjection) << what;
+        expectSameLookups(vertex.image, shaded(loaded, settings, "GS_SHADOW_FRAGMENT_PROJECTION").image,
+                          what);
+    }
+}
+
 const auto caseName = [](const auto& caseInfo) { return caseInfo.param.name; };
+
+// knob: one directional map; outdoor: three cascades; spheres: a spot map; room: a sun's map beside two point
+// lights' cube faces (which the fragment stage projects), so the vertex stage's per-light outputs are indexed
+// past lights it does not project.
+INSTANTIATE_TEST_SUITE_P(
+    , VertexProjection,
+    ::testing::Values(ProjectionCase{"knob_slope_scaled", "knob", ShadowTechnique::SlopeScaledBias},
+                      ProjectionCase{"knob_gsm", "knob", ShadowTechnique::Gsm},
+                      ProjectionCase{"knob_normal_offset", "knob", ShadowTechnique::NormalOffset},
+                      ProjectionCase{"outdoor_cascades_gsm", "outdoor", ShadowTechnique::Gsm, 3},
+                      ProjectionCase{"outdoor_cascades_receiver_plane", "outdoor",
+                                     ShadowTechnique::ReceiverPlaneBias, 3},
+                      ProjectionCase{"spheres_spot_gsm", "spheres", ShadowTechnique::Gsm},
+                      ProjectionCase{"spheres_spot_normal_offset", "spheres", ShadowTechnique::NormalOffset},
+                      ProjectionCase{"room_sun_and_points_slope_scaled", "room",
+                                     ShadowTechnique::SlopeScaledBias, 0, true}),
+    caseName);
 
 // knob: one directional map; outdoor: cascades; room: two point lights' cube faces.
 INSTANTIATE_TEST_SUITE_P(, FacingAwayEarlyOut,

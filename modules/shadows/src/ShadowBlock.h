@@ -27,10 +27,10 @@ enum class LightMapsKind : std::int32_t {
 
 /// @brief std140 mirror of GsShadowLightMaps: which maps a light has and how a fragment picks one.
 struct alignas(16) LightMapsBlock {
-    /// x: LightMapsKind, y: cascade count, clipmap levels or mip levels; Virtual: z the first level's slot
-    /// (the levels' slots follow it), w its page-table layer; VirtualFaces: z 1 (a spot map, `slots.x`) or 6
-    /// (cube faces, as Cube), w the first face's page-table layer (the faces' follow it, their levels its mip
-    /// levels).
+    /// x: LightMapsKind, y: cascade count, clipmap levels or mip levels; Cascades: z the first drawn
+    /// cascade's slot (ShadowModule fills it); Virtual: z the first level's slot (the levels' slots follow
+    /// it), w its page-table layer; VirtualFaces: z 1 (a spot map, `slots.x`) or 6 (cube faces, as Cube), w
+    /// the first face's page-table layer (the faces' follow it, their levels its mip levels).
     glm::ivec4 kind;
     /// Map slot of the single map (x), of each cascade, or of cube faces 0–3; -1: not drawn this frame.
     glm::ivec4 slots;
@@ -88,6 +88,10 @@ struct alignas(16) ShadowBlock {
     /// The soft techniques' widest penumbra radius in each map, texels, four maps a vector: the plan's reach,
     /// or the wider one the map's fit holds (LightProjection::softReachTexels).
     glm::vec4 softReachTexels[kMaxMaps / 4];
+    /// A cascade's texture coordinates from its light's first cascade's, coord = first * scale + offset (xyz;
+    /// identity for other maps): the vertex stage projects into the first cascade only.
+    glm::vec4 cascadeScale[kMaxMaps];
+    glm::vec4 cascadeOffset[kMaxMaps];
 };
 
 static_assert(offsetof(ShadowBlock, texel) == 64 * kMaxMaps);
@@ -108,5 +112,7 @@ static_assert(offsetof(ShadowBlock, virtualPages) % 16 == 0 &&
 static_assert(offsetof(ShadowBlock, virtualPage) == offsetof(ShadowBlock, virtualPages) + 16);
 static_assert(kMaxMaps % 4 == 0 &&
               offsetof(ShadowBlock, softReachTexels) == offsetof(ShadowBlock, virtualPage) + 16);
+static_assert(offsetof(ShadowBlock, cascadeScale) == offsetof(ShadowBlock, softReachTexels) + 4 * kMaxMaps);
+static_assert(offsetof(ShadowBlock, cascadeOffset) == offsetof(ShadowBlock, cascadeScale) + 16 * kMaxMaps);
 
 } // namespace shadows

@@ -30,6 +30,40 @@ const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.fra
 const engine::ProgramDesc kBlurProgram{"shadows/fullscreen.vert", "shadows/blur.frag"};
 
 /// Includes every embedded technique file (shaders/shadows/techniques/), so adding one needs no list.
+/// Each cascade's texture coordinates from those of its light's first drawn cascade (whose slot goes to the
+/// light's kind.z), for the vertex stage's one projection per light. The cascades' matrices differ by an
+/// orthographic box around one light rotation, so the relation is a scale and an offset per axis; in double,
+/// so the first cascade's own is exactly the identity.
+void relateCascades(ShadowBlock& block) {
+    for (int slot = 0; slot < kMaxMaps; ++slot) {
+        block.cascadeScale[slot] = glm::vec4(1.0f);
+        block.cascadeOffset[slot] = glm::vec4(0.0f);
+    }
+    for (LightMapsBlock& maps : block.lights) {
+        if (maps.kind.x != static_cast<int>(LightMapsKind::Cascades)) {
+            continue;
+        }
+        int first = -1;
+        for (int cascade = 0; cascade < maps.kind.y && first < 0; ++cascade) {
+            first = maps.slots[cascade];
+        }
+        maps.kind.z = std::max(first, 0);
+        if (first < 0) {
+            continue;
+        }
+        const glm::dmat4 fromFirst = glm::inverse(glm::dmat4(block.worldToShadow[first]));
+        for (int cascade = 0; cascade < maps.kind.y; ++cascade) {
+            const int slot = maps.slots[cascade];
+            if (slot < 0 || slot == first) {
+                continue;
+            }
+            const glm::dmat4 relation = glm::dmat4(block.worldToShadow[slot]) * fromFirst;
+            block.cascadeScale[slot] = glm::vec4(relation[0][0], relation[1][1], relation[2][2], 1.0);
+            block.cascadeOffset[slot] = glm::vec4(glm::dvec3(relation[3]), 0.0);
+        }
+    }
+}
+
 std::string techniqueIncludes() {
     constexpr std::string_view kFolder = "shadows/techniques/";
     std::string includes;
@@ -155,7 +189,11 @@ MapAllocator& ShadowModule::allocation() {
 }
 
 std::vector<engine::ShaderChunk> ShadowModule::shaderChunks() const {
-    return {{"declarations", "shadows/chunk-declarations",
+    return {{"vertex_declarations", "shadows/chunk-vertex-declarations",
+             "#ifdef GS_SHADOWS\n#include \"shadows/vertex.glsl\"\n#endif"},
+            {"vertex_outputs", "shadows/chunk-vertex-outputs",
+             "#ifdef GS_SHADOWS\ngsShadowVertexOutputs(world);\n#endif"},
+            {"declarations", "shadows/chunk-declarations",
              "#ifdef GS_SHADOWS\n#include \"shadows/receiver.glsl\"\n#endif"},
             {"light_visibility", "shadows/chunk-visibility",
              "#ifdef GS_SHADOWS\nvisibility *= gsShadowVisibility(lightIndex, vWorldPosition, normal, "
@@ -387,6 +425,7 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
             std::max(projection.softReachTexels, plan_.softReachTexels);
     }
     std::copy(lights.begin(), lights.end(), block.lights);
+    relateCascades(block);
     // View depth is -z in view space: minus the view matrix's third row.
     block.viewDepth = -glm::vec4(fit.view[0][2], fit.view[1][2], fit.view[2][2], fit.view[3][2]);
     block.msmDequantize = glm::inverse(glsl::GS_MSM_QUANTIZE);

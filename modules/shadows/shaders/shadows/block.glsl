@@ -12,8 +12,9 @@ const int GS_SHADOW_LIGHT_VIRTUAL = 4;
 const int GS_SHADOW_LIGHT_VIRTUAL_FACES = 5;
 
 struct GsShadowLightMaps {
-    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count, clipmap or mip levels; VIRTUAL: z first level's
-                     // slot, w its page-table layer; VIRTUAL_FACES: z 1 (spot) or 6 (cube), w first face's layer
+    ivec4 kind;      // x: GS_SHADOW_LIGHT_*, y: cascade count, clipmap or mip levels; CASCADES: z first drawn
+                     // cascade's slot; VIRTUAL: z first level's slot, w its page-table layer; VIRTUAL_FACES: z 1
+                     // (spot) or 6 (cube), w first face's layer
     ivec4 slots;     // map slot of the single map (x), of each cascade, or of cube faces 0-3; -1: none
     ivec4 faceSlots; // cube faces 4, 5 (xy)
     vec4 splitNear;  // cascades: view depth each starts at
@@ -50,5 +51,9 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     ivec4 gsVirtualPages; // x pages per side of a level, y atlas tiles per row, z atlas side (texels)
     vec4 gsVirtualPage;   // x page side, y tile side, z border (texels), w 1 / atlas side
     vec4 gsShadowSoftReachTexels[GS_SHADOW_MAX_MAPS / 4]; // the soft techniques' widest radius per map, four a vector
+    // A cascade's map coordinates from its light's first cascade's, coord = first * scale + offset (xyz): the
+    // cascades share the light's rotation, so the vertex stage projects into the first alone.
+    vec4 gsShadowCascadeScale[GS_SHADOW_MAX_MAPS];
+    vec4 gsShadowCascadeOffset[GS_SHADOW_MAX_MAPS];
 };
 

@@ -7,6 +7,11 @@
 #include "visibility.glsl"
 
 #include "block.glsl"
+#include "vertex-projection.glsl"
+
+#ifdef GS_SHADOW_VERTEX_PROJECTION
+in vec4 vGsShadowClip[GS_LIGHT_COUNT]; // vertex.glsl
+#endif
 
 // Whether a debug view replaces the shaded colour.
 #if defined(GS_SHADOW_DEBUG_TEXELS) || defined(GS_SHADOW_DEBUG_GRADIENT) || defined(GS_SHADOW_DEBUG_BIAS)
@@ -186,10 +191,9 @@ vec4 gsShadowMomentsOver(GsShadowLookup lookup, float width) {
 // own define.
 #include "techniques.glsl"
 
-// The image of a world-space offset `d` at `position` in map coordinates and depth: the derivative of the
+// The image of a clip-space offset `dClip` at `clip` in map coordinates and depth: the derivative of the
 // projection (clip.xyz / clip.w), exact for perspective maps too.
-vec3 gsShadowDerivative(mat4 m, vec4 clip, vec3 d) {
-    vec4 dClip = m * vec4(d, 0.0);
+vec3 gsShadowDerivative(vec4 clip, vec4 dClip) {
 #ifdef GS_SHADOW_ORTHOGRAPHIC
     return dClip.xyz; // w is 1 and its derivative 0
 #else
@@ -205,6 +209,26 @@ struct GsShadowFragment {
     vec3 dPdx; // world position per pixel
     vec3 dPdy;
 };
+
+// A receiver's unbiased position in one map's clip space, and its screen derivatives.
+struct GsShadowProjection {
+    vec4 clip;
+    vec4 dx; // per pixel
+    vec4 dy;
+};
+
+GsShadowProjection gsShadowProjectFragment(int slot, GsShadowFragment fragment) {
+    mat4 m = gsShadowMatrix[slot];
+    return GsShadowProjection(m * vec4(fragment.position, 1.0), m * vec4(fragment.dPdx, 0.0),
+                              m * vec4(fragment.dPdy, 0.0));
+}
+
+// A cascade's projection from its light's first cascade's (orthographic: w is 1, its derivatives 0).
+GsShadowProjection gsShadowCascadeProjection(int slot, GsShadowProjection first) {
+    vec3 scale = gsShadowCascadeScale[slot].xyz;
+    return GsShadowProjection(vec4(first.clip.xyz * scale + gsShadowCascadeOffset[slot].xyz, 1.0),
+                              vec4(first.dx.xyz * scale, 0.0), vec4(first.dy.xyz * scale, 0.0));
+}
 
 #if defined(GS_SHADOW_LAYOUT_VIRTUAL) || defined(GS_SHADOW_LAYOUT_VIRTUAL_FACES)
 #define GS_SHADOW_VIRTUAL_PAGES
@@ -229,20 +253,16 @@ ivec2 gsVirtualPageAt(vec2 window) { return ivec2(floor(window / gsVirtualPage.x
 int gsVirtualEntryLevel(uint entry) { return int((entry >> 24) & 63u); }
 #endif
 
-// Visibility of the fragment in map `slot`; -1 (no map drawn) is lit.
-float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
-    if (slot < 0) {
-        return 1.0;
-    }
+// Visibility of the fragment in map `slot` (drawn), where it projects to `projected`.
+float gsShadowMapVisibilityAt(int slot, GsShadowFragment fragment, GsShadowProjection projected) {
     GsShadowLookup lookup;
     lookup.slot = slot;
     lookup.layer = slot;
     lookup.inverseSize = gsShadowTexel[slot].y;
     // One texel's world size at the receiver: constant for orthographic maps, growing with the distance along
-    // the axis (clip w, whose row is the matrix's last) for perspective ones. Biases are in these units, so one
-    // value holds at any scene scale, map size and cascade.
+    // the axis (clip w) for perspective ones. Biases are in these units, so one value holds at any scene scale,
+    // map size and cascade.
     mat4 m = gsShadowMatrix[slot];
-    vec4 wRow = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
     // Texels per side, and a texel's world size (per unit of distance in a perspective map), of the level read.
     float resolution = gsShadowTexel[slot].x;
     float texelScale = gsShadowTexel[slot].z;
@@ -259,18 +279,33 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
 #else
     bool perspective = gsShadowTexel[slot].w > 0.5;
 #endif
-    float texelSize = texelScale * (perspective ? abs(dot(wRow, vec4(fragment.position, 1.0))) : 1.0);
-    vec3 position = fragment.position + fragment.toLight * (gsShadowConstantBiasTexels * texelSize);
+    float texelSize = texelScale * (perspective ? abs(projected.clip.w) : 1.0);
+    lookup.depthScale = length(vec3(m[0][2], m[1][2], m[2][2]));
+    // The receiver moves towards the light and, with a normal offset, along its normal: in clip space, the
+    // images of those offsets.
+    float towardsLight = gsShadowConstantBiasTexels * texelSize;
 #ifdef GS_SHADOW_NORMAL_OFFSET
     // A perspective map measures depth along its axis, so a receiver facing the light but not the axis still
     // slopes in depth there: offset for the steeper of the two angles.
     float cosine = abs(dot(fragment.normal, fragment.toLight));
     if (perspective) {
-        cosine = min(cosine, abs(dot(fragment.normal, normalize(vec3(wRow)))));
+        cosine = min(cosine, abs(dot(fragment.normal, normalize(vec3(m[0][3], m[1][3], m[2][3])))));
     }
-    position += fragment.normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
+    vec3 alongNormal = fragment.normal * gsNormalOffset(gsShadowNormalOffset * texelSize, cosine);
 #endif
-    vec4 clip = m * vec4(position, 1.0);
+#ifdef GS_SHADOW_ORTHOGRAPHIC
+    // A sun's map looks along the light: towards it only depth changes, by the depth per world unit.
+    vec4 clip = projected.clip - vec4(0.0, 0.0, towardsLight * lookup.depthScale, 0.0);
+#ifdef GS_SHADOW_NORMAL_OFFSET
+    clip.xyz += mat3(m) * alongNormal;
+#endif
+#else
+    vec3 offset = fragment.toLight * towardsLight;
+#ifdef GS_SHADOW_NORMAL_OFFSET
+    offset += alongNormal;
+#endif
+    vec4 clip = projected.clip + m * vec4(offset, 0.0);
+#endif
 #ifdef GS_SHADOW_ORTHOGRAPHIC
     vec3 coord = clip.xyz;
 #else
@@ -333,7 +368,6 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     lookup.texel = coord.xy * layerSize;
     lookup.texelWorld = texelSize;
     lookup.perspective = perspective;
-    lookup.depthScale = length(vec3(m[0][2], m[1][2], m[2][2]));
     lookup.lightSize = gsShadowDepthRange[slot].w;
     // The depth bias: format steps of the stored depth, but no less than the arithmetic floor, which is a
     // distance along the light's axis (a fraction of the map's depth range). A perspective map's depth changes
@@ -355,8 +389,8 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
 #endif
     lookup.screenGradient = vec2(0.0);
 #if defined(GS_SHADOW_GRADIENT_SCREEN) || defined(GS_SHADOW_RECEIVER_PLANE)
-    vec3 dx = gsShadowDerivative(m, clip, fragment.dPdx);
-    vec3 dy = gsShadowDerivative(m, clip, fragment.dPdy);
+    vec3 dx = gsShadowDerivative(clip, projected.dx);
+    vec3 dy = gsShadowDerivative(clip, projected.dy);
     lookup.screenGradient = gsReceiverPlaneGradient(dx.xy * resolution, dy.xy * resolution, dx.z, dy.z);
 #endif
     lookup.tangentGradient = vec2(0.0);
@@ -381,8 +415,8 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
         gsDebugSet = true;
         gsDebugSlot = slot;
 #ifdef GS_SHADOW_DEBUG_DENSITY
-        vec3 texelDx = gsShadowDerivative(m, clip, fragment.dPdx) * resolution;
-        vec3 texelDy = gsShadowDerivative(m, clip, fragment.dPdy) * resolution;
+        vec3 texelDx = gsShadowDerivative(clip, projected.dx) * resolution;
+        vec3 texelDy = gsShadowDerivative(clip, projected.dy) * resolution;
         gsDebugDensity = gsTexelFootprintPixels(texelDx.xy, texelDy.xy);
 #endif
         gsDebugVisibility = result.visibility;
@@ -394,6 +428,14 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     return gsSaturate(result.visibility);
 }
 
+// Visibility of the fragment in map `slot` projected here; -1 (no map drawn) is lit.
+float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
+    if (slot < 0) {
+        return 1.0;
+    }
+    return gsShadowMapVisibilityAt(slot, fragment, gsShadowProjectFragment(slot, fragment));
+}
+
 // Which map of light `lightIndex` was read, for the maps debug view: cascade index or cube face, -1 for none.
 int gsDebugMap = -1;
 
@@ -401,6 +443,10 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     // Screen derivatives must be taken before any per-pixel branch (a quad's fragments may pick other maps).
     vec3 dPdx = dFdxFine(worldPosition);
     vec3 dPdy = dFdyFine(worldPosition);
+#ifdef GS_SHADOW_VERTEX_PROJECTION
+    vec4 vertexClip = vGsShadowClip[lightIndex];
+    GsShadowProjection fromVertex = GsShadowProjection(vertexClip, dFdxFine(vertexClip), dFdyFine(vertexClip));
+#endif
 #if !defined(GS_SHADOW_DEBUG_VIEW) && !defined(GS_SHADOW_KEEP_FACING_AWAY)
     // A receiver facing away from the light gets none of it whatever the map says (gsBlinnPhong's Lambert and
     // specular terms are 0 for this normal): no fetch. Debug views show the map's answer there too;
@@ -436,7 +482,15 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
         float visibility = 0.0;
         int last = weight > 0.0 ? cascade + 1 : cascade;
         for (int c = cascade; c <= last; ++c) {
-            visibility += (c == cascade ? 1.0 - weight : weight) * gsShadowMapVisibility(maps.slots[c], fragment);
+            int slot = maps.slots[c];
+#ifdef GS_SHADOW_VERTEX_PROJECTION
+            float inCascade =
+                slot < 0 ? 1.0
+                         : gsShadowMapVisibilityAt(slot, fragment, gsShadowCascadeProjection(slot, fromVertex));
+#else
+            float inCascade = gsShadowMapVisibility(slot, fragment);
+#endif
+            visibility += (c == cascade ? 1.0 - weight : weight) * inCascade;
         }
         return visibility;
     }
@@ -516,9 +570,14 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     if (kind == GS_SHADOW_LIGHT_SINGLE) {
 #ifdef GS_SHADOW_ONE_MAP
         // The frame's only map is slot 0 (ShadowModule::layoutKey): a constant index into the block's arrays.
-        return gsShadowMapVisibility(0, fragment);
+        const int slot = 0;
 #else
-        return gsShadowMapVisibility(maps.slots.x, fragment);
+        int slot = maps.slots.x;
+#endif
+#ifdef GS_SHADOW_VERTEX_PROJECTION
+        return slot < 0 ? 1.0 : gsShadowMapVisibilityAt(slot, fragment, fromVertex);
+#else
+        return gsShadowMapVisibility(slot, fragment);
 #endif
     }
 #endif
