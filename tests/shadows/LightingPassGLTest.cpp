@@ -75,6 +75,12 @@ content::LoadedScene loadScene(const std::string& name) {
                                      options);
 }
 
+/// The comparison means something only where the scene is lit and shadowed.
+void expectLitAndShadowed(const engine::Image& image, const std::string& what) {
+    const auto [darkest, brightest] = std::minmax_element(image.pixels.begin(), image.pixels.end());
+    EXPECT_GT(*brightest - *darkest, 64) << what;
+}
+
 void expectSameImage(const engine::Image& lean, const engine::Image& full, const std::string& what) {
     ASSERT_EQ(lean.size, full.size);
     std::size_t differing = 0;
@@ -82,9 +88,7 @@ void expectSameImage(const engine::Image& lean, const engine::Image& full, const
         differing += lean.pixels[i] != full.pixels[i];
     }
     EXPECT_EQ(differing, 0u) << what;
-    // The comparison means something only where the scene is lit and shadowed.
-    const auto [darkest, brightest] = std::minmax_element(lean.pixels.begin(), lean.pixels.end());
-    EXPECT_GT(*brightest - *darkest, 64) << what;
+    expectLitAndShadowed(lean, what);
 }
 
 /// Pixels whose channels differ by more than 2 of 255 between the two images.
@@ -105,8 +109,7 @@ std::size_t differingPixels(const engine::Image& a, const engine::Image& b) {
 void expectSameLookups(const engine::Image& lean, const engine::Image& full, const std::string& what) {
     ASSERT_EQ(lean.size, full.size);
     EXPECT_LE(differingPixels(lean, full), lean.pixels.size() / 4 / 1000) << what;
-    const auto [darkest, brightest] = std::minmax_element(lean.pixels.begin(), lean.pixels.end());
-    EXPECT_GT(*brightest - *darkest, 64) << what;
+    expectLitAndShadowed(lean, what);
 }
 
 struct LeanPathCase {

@@ -29,7 +29,6 @@ namespace {
 const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
 const engine::ProgramDesc kBlurProgram{"shadows/fullscreen.vert", "shadows/blur.frag"};
 
-/// Includes every embedded technique file (shaders/shadows/techniques/), so adding one needs no list.
 /// Each cascade's texture coordinates from those of its light's first drawn cascade (whose slot goes to the
 /// light's kind.z), for the vertex stage's one projection per light. The cascades' matrices differ by an
 /// orthographic box around one light rotation, so the relation is a scale and an offset per axis; in double,
@@ -64,6 +63,7 @@ void relateCascades(ShadowBlock& block) {
     }
 }
 
+/// Includes every embedded technique file (shaders/shadows/techniques/), so adding one needs no list.
 std::string techniqueIncludes() {
     constexpr std::string_view kFolder = "shadows/techniques/";
     std::string includes;
