@@ -249,6 +249,9 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     engine::writePng(result.shadedImage, result.shaded);
     if (options_.timing) {
         time(engine, scene, shaded, result);
+        if (options_.costModel) {
+            result.lightingOverhead = pairedLightingOverhead(engine, scene, shaded);
+        }
         shadows::ShadowSettings keeping = config.settings;
         keeping.reuseUnchangedMaps = true;
         module.setSettings(keeping);
@@ -324,6 +327,19 @@ void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSett
     }
     result.walkTexelsPerFrame = sum / static_cast<double>(options_.walkFrames);
     result.walkTexelsPerFrameMax = largest;
+}
+
+PassTiming ShadowBench::pairedLightingOverhead(engine::Engine& shadowed, const BenchScene& scene,
+                                               engine::RenderTarget& target) const {
+    engine::Engine unshadowed;
+    unshadowed.renderFrame(scene.scene_, scene.camera_, target); // compiles and uploads
+    // Each round's fastest frames: the machine's noise only ever adds time.
+    std::vector<double> differences;
+    for (int round = 0; round < kCostModelRounds; ++round) {
+        const double base = passTimes(unshadowed, scene, target).lighting.min;
+        differences.push_back(passTimes(shadowed, scene, target).lighting.min - base);
+    }
+    return summarise(differences);
 }
 
 ShadowBench::PassTimes ShadowBench::passTimes(engine::Engine& engine, const BenchScene& scene,
@@ -489,6 +505,7 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
             worldToMap = projection->worldToShadow;
         }
     }
+    // Each configuration's fastest frame, as the techniques' overheads take them (pairedLightingOverhead).
     const auto lightingPass = [&](engine::Engine& engine) {
         // Warm-up: a probe count's first draw compiles its program.
         engine.renderFrame(scene.scene_, scene.camera_, target);
@@ -503,17 +520,16 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
         compare.addModule(std::make_unique<FetchProbe>(FetchKind::Compare, 1, worldToMap)));
     // Rounds alternate every configuration, so a drift of the machine's speed spreads over all of them; each
     // count's figure is its median over the rounds.
-    constexpr int kRounds = 3;
     std::vector<double> base;
     std::map<int, std::vector<double>> filteredTimes;
     std::map<int, std::vector<double>> compareTimes;
-    for (int round = 0; round < kRounds; ++round) {
-        base.push_back(lightingPass(unshadowed).median);
+    for (int round = 0; round < kCostModelRounds; ++round) {
+        base.push_back(lightingPass(unshadowed).min);
         for (const int fetches : FetchProbe::kCounts) {
             filteredProbe.setFetches(fetches);
-            filteredTimes[fetches].push_back(lightingPass(filtered).median);
+            filteredTimes[fetches].push_back(lightingPass(filtered).min);
             compareProbe.setFetches(fetches);
-            compareTimes[fetches].push_back(lightingPass(compare).median);
+            compareTimes[fetches].push_back(lightingPass(compare).min);
         }
     }
     cost.unshadowedLighting = summarise(base);
@@ -804,6 +820,11 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
              {"lightingPassMs",
               {{"median", r.lightingPass.median}, {"min", r.lightingPass.min}, {"max", r.lightingPass.max}}},
+             {"lightingOverheadMs", r.lightingOverhead
+                                        ? nlohmann::json({{"median", r.lightingOverhead->median},
+                                                          {"min", r.lightingOverhead->min},
+                                                          {"max", r.lightingOverhead->max}})
+                                        : nlohmann::json()},
              {"frameMs", {{"median", r.frame.median}, {"min", r.frame.min}, {"max", r.frame.max}}},
              {"stillFrameMs",
               {{"median", r.stillFrame.median}, {"min", r.stillFrame.min}, {"max", r.stillFrame.max}}},

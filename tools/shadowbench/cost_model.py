@@ -23,8 +23,11 @@ def section(doc, nir=None):
            f"4, 8 and 16 reads per fragment of a 2048² depth map, where the default technique's map lies, and nothing "
            f"else; the least-squares slope of its lighting pass over the count is one read's cost on this renderer "
            f"({doc['renderer']}, {doc['width']}x{doc['height']}, {doc['timingMethod']}, the counts alternated over "
-           f"3 rounds). A technique's overhead is its lighting pass minus the unshadowed one; in fetch-equivalents, "
-           f"that over one bilinear read. Goal: at most 1.5 x its map reads + 2. Instructions: the fragment shader "
+           f"5 rounds, each count's fastest frame of a round). A technique's overhead is its lighting pass minus "
+           f"the unshadowed one, the two timed back to back in each of 5 rounds and each a round's fastest frame "
+           f"(the machine's noise only adds time; the median difference, its range over the rounds in brackets), "
+           f"so that a drift of the machine's speed cancels; in fetch-equivalents, that over one bilinear read. "
+           f"Goal: at most 1.5 x its map reads + 2. Instructions: the fragment shader "
            f"of each variant as Mesa's NIR (MESA_GLSL=dump) on "
            f"{(nir or {}).get('scene', 'the knob')}, texture instructions in brackets (a loop's counted once).\n"]
     scenes = {c["scene"]: c for c in doc["scenes"] if c.get("filteredFetchMs")}
@@ -42,13 +45,16 @@ def section(doc, nir=None):
         for r in doc["results"]:
             if r["scene"] != scene or r["peer"]:
                 continue
-            overhead = r["lightingPassMs"]["median"] - base
+            paired = r.get("lightingOverheadMs")
+            overhead = paired["median"] if paired else r["lightingPassMs"]["median"] - base
+            spread = f" [{paired['min']:.1f}, {paired['max']:.1f}]" if paired else ""
             equivalents = overhead / unit if unit > 0 else float("nan")
             v = variants.get(r["settings"]["technique"], {})
             lighting = v.get("lighting")
             depth = v.get("depth")
             lines.append(
-                f"| `{r['label']}` | {r['mapReads']} | {r['lightingPassMs']['median']:.1f} | {overhead:.1f} | "
+                f"| `{r['label']}` | {r['mapReads']} | {r['lightingPassMs']['median']:.1f} | "
+                f"{overhead:.1f}{spread} | "
                 f"{equivalents:.1f} | {goal(r['mapReads']):.1f} | {'yes' if equivalents <= goal(r['mapReads']) else 'no'} | "
                 f"{r['shadowPassMs']['median']:.1f} | "
                 + (f"{lighting['instructions']} ({lighting['textures']})" if lighting else "–") + " | "

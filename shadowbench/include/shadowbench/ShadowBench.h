@@ -47,6 +47,10 @@ struct BenchResult {
     std::optional<SoftShadowMetrics> soft;
     PassTiming shadowPass;
     PassTiming lightingPass;
+    /// The cost model (BenchOptions::costModel): the lighting pass minus the unshadowed one, each round's two
+    /// timed back to back so that a drift of the machine's speed cancels; median, least and largest over the
+    /// rounds. Empty when not measured (an overhead within the noise may be negative).
+    std::optional<PassTiming> lightingOverhead;
     /// Whole frames (glFinish + steady clock around Engine::renderFrame), as an application would see them,
     /// each drawing its maps (ShadowSettings::reuseUnchangedMaps off), as every frame of a moving view does.
     /// The passes above are timed the same way.
@@ -300,6 +304,12 @@ private:
     };
     /// The pre-pass and lighting-pass times of BenchOptions::frames frames of `engine` on `scene`.
     PassTimes passTimes(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target) const;
+    /// BenchResult::lightingOverhead: `shadowed`'s lighting pass against a new unshadowed engine's,
+    /// alternated.
+    PassTiming pairedLightingOverhead(engine::Engine& shadowed, const BenchScene& scene,
+                                      engine::RenderTarget& target) const;
+    /// Rounds of the cost model's alternated timings.
+    static constexpr int kCostModelRounds = 5;
     /// Pass and whole-frame times of `engine`, already warmed up on `scene`.
     void time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
               BenchResult& result) const;
