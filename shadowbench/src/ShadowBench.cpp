@@ -533,6 +533,11 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
         }
     }
     cost.unshadowedLighting = summarise(base);
+    std::vector<double> oneReadOverheads;
+    for (std::size_t round = 0; round < base.size(); ++round) {
+        oneReadOverheads.push_back(compareTimes[1][round] - base[round]);
+    }
+    cost.oneCompareReadOverheadMs = summarise(oneReadOverheads).median;
     // Least squares over the counts: the slope is one fetch's cost, the intercept the probe's fixed code.
     const auto slope = [](const std::map<int, std::vector<double>>& times) {
         double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
@@ -862,6 +867,8 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"filteredFetchMs",
               c.filteredFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.filteredFetchMs)},
              {"compareFetchMs", c.compareFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.compareFetchMs)},
+             {"oneCompareReadOverheadMs",
+              c.oneCompareReadOverheadMs ? nlohmann::json(*c.oneCompareReadOverheadMs) : nlohmann::json()},
              {"softTruth", c.softTruth.samplesPerAxis == 0
                                ? nlohmann::json()
                                : nlohmann::json({{"samplesPerAxis", c.softTruth.samplesPerAxis},

@@ -38,7 +38,12 @@ def section(doc, nir=None):
         unit = cost["filteredFetchMs"]
         base = cost["unshadowedLightingMs"]["median"]
         out.append(f"**{scene}**: unshadowed lighting pass {base:.1f} ms; one read {unit:.2f} ms bilinear, "
-                   f"{cost['compareFetchMs']:.2f} ms with comparison.\n")
+                   f"{cost['compareFetchMs']:.2f} ms with comparison"
+                   + (f"; the reference pass with one comparison read and nothing else adds "
+                      f"{cost['oneCompareReadOverheadMs']:.1f} ms "
+                      f"({cost['oneCompareReadOverheadMs'] / unit:.1f} fetch-equivalents), the least a one-read "
+                      f"technique adds here" if cost.get("oneCompareReadOverheadMs") is not None and unit > 0 else "")
+                   + ".\n")
         lines = ["| technique | map reads | lighting ms | overhead ms | fetch-equivalents | goal | meets | "
                  "shadow pass ms | lighting instructions | depth instructions |",
                  "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]

@@ -126,6 +126,9 @@ struct SceneCost {
     PassTiming unshadowedLighting{-1.0, -1.0, -1.0};
     double filteredFetchMs = -1.0;
     double compareFetchMs = -1.0;
+    /// The reference pass with one comparison read and nothing else, minus the unshadowed pass (the median of
+    /// the rounds' differences): the least a one-read variant adds on this renderer. Empty when not measured.
+    std::optional<double> oneCompareReadOverheadMs;
     /// The scene's ground truth, where it is soft.
     SoftTruth softTruth;
 };
