@@ -236,6 +236,7 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     engine.renderFrame(scene.scene_, scene.camera_, shaded);
     result.shadowBytes = module.stats().bytes;
     result.mapResolution = module.stats().mapResolution;
+    result.casterTexels = module.stats().casterTexels;
     result.shadowMaps = module.stats().shadowMaps;
     result.virtualMaps = module.stats().virtualMaps;
     if (result.virtualMaps) {
@@ -839,6 +840,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"peerUnlitReceivers", r.peerUnlitReceivers},
              {"shadowBytes", r.shadowBytes},
              {"mapResolution", r.mapResolution},
+             {"casterTexels", r.casterTexels},
              {"mapReads", mapReadsPerLookup(r.config.settings)},
              {"fullKernelFraction", r.fullKernelFraction},
              {"shimmer", r.shimmer},

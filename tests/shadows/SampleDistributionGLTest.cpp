@@ -1,11 +1,13 @@
 // The sample-distribution fit on the GPU: its reduction against the CPU mirror on the same depth image, a
-// single mesh spanning the view fitted to its visible samples, and the fallback of a view with nothing in it.
+// single mesh spanning the view fitted to its visible samples, the casters drawn only where those samples
+// read changing no image, and the fallback of a view with nothing in it.
 #include "VisibleSamples.h"
 
 #include "../engine/GLTestContext.h"
 
 #include <engine/EmbeddedShaderFile.h>
 #include <engine/Engine.h>
+#include <engine/Image.h>
 #include <engine/Primitives.h>
 #include <engine/RenderTarget.h>
 #include <shadows/SampleDistribution.h>
@@ -13,9 +15,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
+#include <string>
 
 std::span<const engine::EmbeddedShaderFile> gsShadowShaders();
 
@@ -194,6 +198,116 @@ TEST(SampleDistributionGLTest, ASingleMeshSpanningTheViewIsFittedToItsVisibleSam
     EXPECT_GE(fitted, extentOf(visible));
     EXPECT_LT(fitted, 0.5f * boundsFit->texelScale * 1024.0f);
 }
+
+namespace {
+
+struct DrawnRegionCase {
+    std::string name;
+    ShadowTechnique technique;
+    glm::vec3 target;     // where the camera looks
+    int cascadeCount = 1; // 0: automatic
+};
+
+void PrintTo(const DrawnRegionCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+struct RegionFrame {
+    engine::Image image;
+    std::vector<LightProjection> maps;
+    ShadowStats stats;
+};
+
+/// The apron under its sun through the camera; with `frozenAt`, the maps fitted to that view as a frozen fit,
+/// which draws them whole.
+RegionFrame renderApron(const DrawnRegionCase& c, std::optional<FitView> frozenAt) {
+    engine::EntityId camera = engine::kNoEntity;
+    const engine::Scene scene = mergedApron(camera, c.target);
+    ShadowSettings settings;
+    settings.technique = c.technique;
+    settings.cascadeCount = c.cascadeCount;
+    settings.resolution = 1024;
+    engine::Engine engine;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    module.setFitView(frozenAt);
+    engine::RenderTarget target({320, 240});
+    engine.renderFrame(scene, camera, target);
+    return {target.readPixels(), module.lightProjections(0), module.stats()};
+}
+
+float regionArea(const LightProjection& map) {
+    return (map.drawnRegion.z - map.drawnRegion.x) * (map.drawnRegion.w - map.drawnRegion.y);
+}
+
+class DrawnRegion : public ::testing::TestWithParam<DrawnRegionCase> {};
+
+} // namespace
+
+// Casters drawn only within the reach of the visible samples' lookups (LightProjection::drawnRegion) give the
+// image of the same maps drawn whole, each technique's kernel, blur and penumbra reach included.
+TEST_P(DrawnRegion, ChangesNoImage) {
+    glTestContext();
+    const DrawnRegionCase& c = GetParam();
+    FitView cameraView;
+    {
+        engine::EntityId camera = engine::kNoEntity;
+        const engine::Scene scene = mergedApron(camera, c.target);
+        engine::Engine engine;
+        auto& probe = static_cast<SampleProbe&>(engine.addModule(std::make_unique<SampleProbe>()));
+        engine::RenderTarget target({320, 240});
+        engine.renderFrame(scene, camera, target);
+        cameraView = FitView{probe.view, probe.projection};
+    }
+    const RegionFrame scissored = renderApron(c, std::nullopt);
+    const RegionFrame whole = renderApron(c, cameraView);
+    ASSERT_FALSE(scissored.maps.empty());
+    ASSERT_EQ(scissored.maps.size(), whole.maps.size());
+    // The comparison means something only where casters were left out of some map, and the image shows
+    // shadow.
+    float smallest = 1.0f;
+    for (std::size_t map = 0; map < whole.maps.size(); ++map) {
+        EXPECT_EQ(regionArea(whole.maps[map]), 1.0f) << c.name << " map " << map;
+        EXPECT_EQ(scissored.maps[map].worldToShadow, whole.maps[map].worldToShadow)
+            << c.name << " map " << map;
+        smallest = std::min(smallest, regionArea(scissored.maps[map]));
+    }
+    std::cout << "[ measured ] " << c.name << ": " << scissored.maps.size()
+              << " maps, the smallest drawn over " << smallest * 100.0f << " % of its texels\n";
+    EXPECT_LT(smallest, 0.9f) << c.name;
+    // The stats count the texels drawn: every one of the whole maps', fewer of the others'.
+    const auto side = static_cast<std::size_t>(whole.stats.mapResolution);
+    EXPECT_EQ(whole.stats.casterTexels, side * side * whole.maps.size()) << c.name;
+    EXPECT_LT(scissored.stats.casterTexels, whole.stats.casterTexels) << c.name;
+    EXPECT_GT(scissored.stats.casterTexels, 0u) << c.name;
+    ASSERT_EQ(scissored.image.size, whole.image.size);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < scissored.image.pixels.size(); ++i) {
+        differing += scissored.image.pixels[i] != whole.image.pixels[i];
+    }
+    EXPECT_EQ(differing, 0u) << c.name;
+    const auto [darkest, brightest] =
+        std::minmax_element(scissored.image.pixels.begin(), scissored.image.pixels.end());
+    EXPECT_GT(*brightest - *darkest, 64) << c.name;
+}
+
+// Looking down 8 m ahead: one map; towards the horizon: the automatic cascades. The techniques: one
+// comparison (slope-scaled, normal-offset and its receiver offset), PCF's kernel, GSM's and receiver-plane's
+// gradients, EVSM's blurred moments, PCSS's search and msm-soft's moment mips (the soft reach).
+INSTANTIATE_TEST_SUITE_P(
+    , DrawnRegion,
+    ::testing::Values(
+        DrawnRegionCase{"near_slope_scaled", ShadowTechnique::SlopeScaledBias, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_normal_offset", ShadowTechnique::NormalOffset, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_pcf", ShadowTechnique::Pcf, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_gsm", ShadowTechnique::Gsm, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_receiver_plane", ShadowTechnique::ReceiverPlaneBias, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_evsm", ShadowTechnique::Evsm, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_pcss", ShadowTechnique::Pcss, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_msm_soft", ShadowTechnique::MsmSoft, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{
+            "horizon_cascades_slope_scaled", ShadowTechnique::SlopeScaledBias, {0.0f, 0.0f, -60.0f}, 0},
+        DrawnRegionCase{"horizon_cascades_pcf", ShadowTechnique::Pcf, {0.0f, 0.0f, -60.0f}, 0}),
+    [](const auto& caseInfo) { return caseInfo.param.name; });
 
 TEST(SampleDistributionGLTest, AViewWithNothingInItFallsBackToBoundsSayingSoOnce) {
     glTestContext();

@@ -158,6 +158,54 @@ TEST(SampleDistributionTest, TheMapHoldsTheSamplesAndTheirMarginAndNoMore) {
     }
 }
 
+TEST(SampleDistributionTest, CastersAreDrawnWhereTheSamplesReadAndNoFurther) {
+    // Samples four times wider than deep in light space: the square map spans the width, and the casters
+    // need drawing only over the samples, their kernels' reach (the margin and a texel) and the receivers'
+    // two texels of offset.
+    const glm::vec3 direction = glm::normalize(glm::vec3(0.3f, -0.4f, -0.8f));
+    const LightRect samples = rect({-20.0f, 3.0f, -40.0f}, {20.0f, 13.0f, -5.0f});
+    const float margin = 3.0f;
+    for (const bool snap : {false, true}) {
+        const LightProjection map = fitToSamples(direction, samples, {}, 1024, margin, snap);
+        ASSERT_TRUE(map.valid);
+        const glm::vec4 region = map.drawnRegion;
+        const glm::mat4 toWorld = glm::inverse(lightView(direction));
+        const glm::vec4 low =
+            map.worldToShadow * toWorld * glm::vec4(samples.min.x, samples.min.y, -20.0f, 1.0f);
+        const glm::vec4 high =
+            map.worldToShadow * toWorld * glm::vec4(samples.max.x, samples.max.y, -20.0f, 1.0f);
+        const float reach = (margin + 1.0f + 2.0f) / 1024.0f;
+        const float tolerance = 1e-5f;
+        EXPECT_NEAR(region.x, std::max(low.x - reach, 0.0f), tolerance) << snap;
+        EXPECT_NEAR(region.y, std::max(low.y - reach, 0.0f), tolerance) << snap;
+        EXPECT_NEAR(region.z, std::min(high.x + reach, 1.0f), tolerance) << snap;
+        EXPECT_NEAR(region.w, std::min(high.y + reach, 1.0f), tolerance) << snap;
+        // Across the narrow side a quarter of the map and its reach; across the wide one all of it, the
+        // snapped extent's slack beyond the samples left out.
+        EXPECT_LT(region.w - region.y, 0.26f + 2.0f * reach) << snap;
+        EXPECT_GE(region.x, 0.0f) << snap;
+        EXPECT_LE(region.z, 1.0f) << snap;
+    }
+    // Visible samples beyond those a caster can shadow: the region holds their lookups too, so each reads
+    // what it would in the whole map; the map itself is fitted to the shadowable ones alone.
+    const LightRect visible = rect({-20.0f, -5.0f, -40.0f}, {20.0f, 13.0f, -5.0f});
+    const LightProjection held = fitToSamples(direction, samples, {}, 1024, margin, false);
+    const LightProjection all = fitToSamples(direction, samples, {}, 1024, margin, false, {}, &visible);
+    EXPECT_EQ(all.worldToShadow, held.worldToShadow);
+    EXPECT_LT(all.drawnRegion.y, held.drawnRegion.y);
+    EXPECT_EQ(all.drawnRegion.w, held.drawnRegion.w);
+    const glm::vec4 below = all.worldToShadow * glm::inverse(lightView(direction)) *
+                            glm::vec4(visible.min.x, visible.min.y, -20.0f, 1.0f);
+    EXPECT_NEAR(all.drawnRegion.y, std::max(below.y - (margin + 3.0f) / 1024.0f, 0.0f), 1e-5f);
+    // Where the map is no wider than the samples and their reach, it is drawn whole.
+    const LightProjection square =
+        fitToSamples(direction, rect({0.0f, 0.0f, -40.0f}, {30.0f, 30.0f, -5.0f}), {}, 1024, margin, false);
+    EXPECT_NEAR(square.drawnRegion.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(square.drawnRegion.z, 1.0f, 1e-6f);
+    EXPECT_NEAR(square.drawnRegion.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(square.drawnRegion.w, 1.0f, 1e-6f);
+}
+
 TEST(SampleDistributionTest, SnappedFitIgnoresSubTexelMotionOfTheSamples) {
     // The samples move by a fraction of a texel (a camera creeping forward): quantised extent, snapped origin
     // and stepped depth keep the map's texel grid; only whole texels move it.

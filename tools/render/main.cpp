@@ -298,6 +298,8 @@ int main(int argc, char** argv) {
                << "  \"shadowBytes\": " << (shadowModule ? shadowModule->stats().bytes : 0) << ",\n"
                << "  \"shadowMapResolution\": " << (shadowModule ? shadowModule->stats().mapResolution : 0)
                << ",\n"
+               << "  \"shadowCasterTexels\": " << (shadowModule ? shadowModule->stats().casterTexels : 0)
+               << ",\n"
                << "  \"framesReusingShadowMaps\": " << framesReusingMaps << ",\n";
         if (shadowModule && shadowModule->stats().virtualMaps) {
             // The last timed frame's pages: a static view draws none once the first frame has.

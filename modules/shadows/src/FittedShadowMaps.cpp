@@ -78,9 +78,14 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
                                     frame.fit.projection, imageHeight)
                    : settings_.resolution;
     const auto fitted = [&](int cascade) {
-        return fitToSamples(light.direction,
-                            slices[static_cast<std::size_t>(sampleSliceIndex(count, cascade))], frame.boxes,
-                            resolution, hardMargin, settings_.texelSnapping, softMargin(light));
+        const auto slice = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
+        LightProjection projection =
+            fitToSamples(light.direction, slices[slice], frame.boxes, resolution, hardMargin,
+                         settings_.texelSnapping, softMargin(light), &bounds->slices[slice]);
+        if (!frame.fitIsCamera) {
+            projection.drawnRegion = LightProjection{}.drawnRegion;
+        }
+        return projection;
     };
     if (count == 1) {
         maps.slots.x = addSlot(slots, light.index, fitted(0), resolution);
@@ -202,9 +207,19 @@ void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Prog
         const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
         const LightProjection& projection = slots[layer].projection;
         framebuffer.bind();
-        glViewport(0, 0, maps_->depth.size().x, maps_->depth.size().y);
+        const glm::ivec2 size = maps_->depth.size();
+        glViewport(0, 0, size.x, size.y);
         clearMapTargets(*maps_, framebuffer.id(), plan_);
+        const glm::ivec4 drawn = drawnTexels(projection, size.x);
+        const bool whole = drawn == glm::ivec4(0, 0, size);
+        if (!whole) {
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(drawn.x, drawn.y, drawn.z, drawn.w);
+        }
         drawCasters(host_, scene, program, projection);
+        if (!whole) {
+            glDisable(GL_SCISSOR_TEST);
+        }
     }
 }
 

@@ -359,7 +359,7 @@ glm::mat4 lightView(const glm::vec3& direction) {
 
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
-                             bool snapToTexels, SoftMargin soft) {
+                             bool snapToTexels, SoftMargin soft, const LightRect* visible) {
     LightProjection result;
     const glm::vec3 size = samples.max - samples.min;
     if (samples.empty() || resolution < 16 || !(size.x >= 0.0f && size.y >= 0.0f && size.z >= 0.0f) ||
@@ -413,8 +413,16 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
         farthest = std::floor((farthest - depthMargin) / step) * step;
         depthMargin = 0.0f;
     }
+    constexpr float kReceiverOffsetTexels = 2.0f;
     completeOrthographicMap(result, centre, extent, nearest, farthest, depthMargin, resolution,
-                            Aabb{samples.min, samples.max}, 2.0f);
+                            Aabb{samples.min, samples.max}, kReceiverOffsetTexels);
+    // A sample's lookup lies within its offsets of it and reads within the kernels' reach of that.
+    const float reach = (slack + kReceiverOffsetTexels) * result.texelScale;
+    const glm::vec2 origin = centre - glm::vec2(0.5f * extent);
+    const LightRect& read = visible != nullptr && !visible->empty() ? *visible : samples;
+    const glm::vec2 low = glm::clamp((glm::vec2(read.min) - reach - origin) / extent, 0.0f, 1.0f);
+    const glm::vec2 high = glm::clamp((glm::vec2(read.max) + reach - origin) / extent, 0.0f, 1.0f);
+    result.drawnRegion = glm::vec4(low, high);
     return result;
 }
 

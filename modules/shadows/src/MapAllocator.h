@@ -33,6 +33,9 @@ struct AllocationFrame {
     std::span<const Aabb> boxes;
     /// The entity each of `boxes` belongs to.
     std::span<const engine::EntityId> entities;
+    /// Whether `fit` is the frame's own camera, so that its visible samples are the pixels the lighting pass
+    /// shades; a frozen fit's maps are drawn whole.
+    bool fitIsCamera = true;
 };
 
 /// @brief Warnings said once per attached module, however often a settings change replaces its allocation.
@@ -97,8 +100,17 @@ std::int32_t drawnKind(const LightMapsBlock& maps, LightMapsKind drawn);
 /// into: the depth to the far plane, a gradient to zero, moments to the plan's far-plane value.
 void clearMapTargets(const ShadowMapArray& maps, GLuint framebuffer, const ShadowPlan& plan);
 
+/// @brief The texels of a `side`-texel map its projection's drawnRegion covers, rounded out to whole texels:
+/// the first's x and y, then the width and height (the whole map for the region (0, 0, 1, 1)).
+glm::ivec4 drawnTexels(const LightProjection& projection, int side);
+
+/// @brief Clip space to the clip space of `region` alone (texture coordinates, min xy then max xy): what
+/// lies within the region's part of the map, and only that, lies within the new clip volume.
+glm::mat4 regionClip(const glm::vec4& region);
+
 /// @brief Draws the casters of `scene` seen through `projection` with `program` (the shadow pass's, in use),
-/// culled to its clip volume: casters outside it could not write a texel.
+/// culled to the clip volume of its drawnRegion: casters outside it could not write a texel read. Texels
+/// outside the region are the caller's to scissor.
 void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
                  const LightProjection& projection);
 

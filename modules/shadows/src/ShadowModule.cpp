@@ -114,6 +114,10 @@ ShadowStats ShadowModule::stats() const {
             stats.pages = allocation_->pageStats();
         } else if (!slots_.empty()) {
             stats.mapResolution = slots_.front().resolution; // one array holds every map, at one side
+            for (const MapSlot& slot : slots_) {
+                const glm::ivec4 drawn = drawnTexels(slot.projection, stats.mapResolution);
+                stats.casterTexels += static_cast<std::size_t>(drawn.z) * static_cast<std::size_t>(drawn.w);
+            }
         }
     }
     return stats;
@@ -226,7 +230,7 @@ void ShadowModule::fitMaps(const engine::FrameContext& frame, const FitView& fit
     for (LightMapsBlock& maps : lights) {
         maps.slots = maps.faceSlots = glm::ivec4(-1);
     }
-    allocation().allocate({frame, fit, boxes, entities}, slots_, lights);
+    allocation().allocate({frame, fit, boxes, entities, !fitView_.has_value()}, slots_, lights);
     if (slots_.empty()) {
         return;
     }

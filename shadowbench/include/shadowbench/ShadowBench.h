@@ -69,6 +69,8 @@ struct BenchResult {
     std::size_t shadowBytes = 0;
     /// Side of the whole maps drawn, texels (ShadowStats::mapResolution); 0 for virtual maps and peer rows.
     int mapResolution = 0;
+    /// Texels of the whole maps the casters were drawn into in a frame (ShadowStats::casterTexels).
+    std::size_t casterTexels = 0;
     /// Shadow maps drawn (cascades and cube faces count one each); 0 for peer rows.
     int shadowMaps = 0;
     /// Virtual maps (ShadowSettings::mapAllocation): the pages of the cold first frame, and those of the

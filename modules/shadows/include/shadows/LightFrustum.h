@@ -41,6 +41,12 @@ struct LightProjection {
     /// The widest penumbra radius, in texels, the margin of a map fitted with a SoftMargin holds beyond the
     /// technique's own reach (ShadowPlan::softReachTexels, which every map keeps); zero for other maps.
     float softReachTexels = 0.0f;
+    /// Where the visible receivers' lookups read, in texture coordinates (min x, min y, max x, max y): for a
+    /// map fitted to the samples, their box widened by the lookups' reach, within the map. Casters are drawn
+    /// there alone (scissored, and culled to it), so a square map wider than the view's samples along one
+    /// axis, or enlarged by the snapped extent, spends no fill beyond them. The whole map, (0, 0, 1, 1), for
+    /// every other map.
+    glm::vec4 drawnRegion{0.0f, 0.0f, 1.0f, 1.0f};
     /// False when nothing visible can receive a shadow from this light (no map needs drawing).
     bool valid = false;
 };
@@ -141,11 +147,13 @@ struct SoftMargin {
 /// range to steps of an eighth of an octave of its span, so a moving camera changes it rarely (SDSM's known
 /// weakness is flashing as the fit follows the samples). Depth: from the deepest sample to the nearest caster
 /// over the map (the part of every box over it, towards the light), so casters outside the view still cast.
-/// Beyond the samples' box, less two texels for the receiver's own offsets, is the lit border. Invalid when
-/// `samples` is empty or not finite.
+/// Beyond the samples' box, less two texels for the receiver's own offsets, is the lit border. The casters
+/// are drawn within the margin and those two texels of `visible` (drawnRegion): every visible sample of the
+/// slice, of which `samples` are those a caster can shadow, so that each one's lookup reads what it did in a
+/// map drawn whole; `samples` where null. Invalid when `samples` is empty or not finite.
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
-                             bool snapToTexels, SoftMargin soft = {});
+                             bool snapToTexels, SoftMargin soft = {}, const LightRect* visible = nullptr);
 
 /// @brief Where a directional light shining along `direction` can shadow a receiver in the view of
 /// `cameraViewProjection`, as a light-space (lightView) xy box (z = 0): the part of each box the view can see

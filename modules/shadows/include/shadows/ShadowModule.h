@@ -39,6 +39,10 @@ struct ShadowStats {
     /// directional map took the side its view needs (ShadowSettings::fittedTexelPixels); 0 with none drawn or
     /// with virtual maps.
     int mapResolution = 0;
+    /// Texels of the whole maps drawn in the last frame that casters were drawn into, summed over the maps:
+    /// each map's LightProjection::drawnRegion, the fill the shadow pass spent (0 with virtual maps, whose
+    /// `pages` count what was drawn).
+    std::size_t casterTexels = 0;
     /// Whether the last frame kept the maps of the frame before, nothing they are drawn from having changed
     /// (ShadowSettings::reuseUnchangedMaps): it drew no map and ran no sample pass.
     bool reusedMaps = false;
@@ -81,7 +85,9 @@ public:
     [[nodiscard]] std::vector<LightProjection> lightProjections(int lightIndex) const;
     /// @brief Fits the maps to `view` instead of the frame's camera; nullopt (the default) follows the
     /// camera. A frozen fit shows what a camera's maps cover from elsewhere, and lets a measurement move the
-    /// fit while the observer stays still (shimmer, docs/RESULTS.md).
+    /// fit while the observer stays still (shimmer, docs/RESULTS.md). A frozen fit's maps are drawn whole,
+    /// where the camera's own draw casters only where its visible samples read
+    /// (LightProjection::drawnRegion).
     void setFitView(std::optional<FitView> view) { fitView_ = view; }
 
     /// @brief Registers the module's GLSL files and reserves its texture units.
