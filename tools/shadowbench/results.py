@@ -911,6 +911,12 @@ def sizing_section(sizing):
     out.append("\n".join(lines) + "\n")
 
 
+def drawn_texels(r):
+    """The fraction of its maps' texels a result's casters were drawn into (ShadowStats::casterTexels)."""
+    texels = r["mapResolution"] ** 2 * r["shadowMaps"]
+    return f"{100.0 * r['casterTexels'] / texels:.0f} %" if texels and "casterTexels" in r else "–"
+
+
 def still_section(still):
     """The default technique's frame with every frame drawing its maps and on a still view that keeps them, beside
     osgShadow's ViewDependentShadowMap, per scene, and the frame goal's tally."""
@@ -925,12 +931,14 @@ def still_section(still):
                "moving view does: the sample pass, the casters and the lighting pass. *Still*: the same view's "
                "frames after one that drew them, which keep them (`reuseUnchangedMaps`, the default; docs/SHADOWS.md, "
                "\"Kept while nothing changes\"); VDSM draws its map every frame either way, so *moving* is the like-for-"
-               f"like comparison and *still* what a view that stands still costs. Medians of {still['frames']} frames, "
+               f"like comparison and *still* what a view that stands still costs. Texels drawn: the part of the maps' texels "
+               "the casters were drawn into, within the reach of the visible samples' lookups (docs/SHADOWS.md, "
+               f"\"Casters drawn only where the samples read\"). Medians of {still['frames']} frames, "
                f"{still['timingMethod']}, both programs on {still['renderer']}. Edges: p95 true→rendered / "
                "rendered→true, px, as in \"Defaults\".\n")
-    lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving) | moving frame ms | still frame ms "
-             "| osg-vdsm frame ms | moving / VDSM | still / VDSM | memory | edges p95: ours / VDSM |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving) | texels drawn | moving frame ms "
+             "| still frame ms | osg-vdsm frame ms | moving / VDSM | still / VDSM | memory | edges p95: ours / VDSM |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "pass": 0}
     for r in ours:
         scene = r["scene"]
@@ -951,7 +959,7 @@ def still_section(still):
         lines.append(
             f"| {scene} | {cost['triangles']} | {cost['unshadowedFrameMs']['median']:.1f} / "
             + (f"{peer_unshadowed:.1f}" if peer_unshadowed else "–")
-            + f" | {r['shadowPassMs']['median']:.1f} | {moving:.1f} | {kept:.1f} | "
+            + f" | {r['shadowPassMs']['median']:.1f} | {drawn_texels(r)} | {moving:.1f} | {kept:.1f} | "
             + (f"{frame_ms(peer):.1f} | {moving / frame_ms(peer):.2f}× | {kept / frame_ms(peer):.2f}×" if peer
                else "– | – | –")
             + f" | {r['shadowBytes'] / 2**20:.0f} MiB | {mine['trueToRendered']['p95']:.1f} / "
