@@ -197,6 +197,11 @@ TEST(SampleDistributionTest, CastersAreDrawnWhereTheSamplesReadAndNoFurther) {
     const glm::vec4 below = all.worldToShadow * glm::inverse(lightView(direction)) *
                             glm::vec4(visible.min.x, visible.min.y, -20.0f, 1.0f);
     EXPECT_NEAR(all.drawnRegion.y, std::max(below.y - (margin + 3.0f) / 1024.0f, 0.0f), 1e-5f);
+    // A visible box that is not a number draws the map whole.
+    LightRect broken = visible;
+    broken.max.y = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(fitToSamples(direction, samples, {}, 1024, margin, false, {}, &broken).drawnRegion,
+              glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
     // Where the map is no wider than the samples and their reach, it is drawn whole.
     const LightProjection square =
         fitToSamples(direction, rect({0.0f, 0.0f, -40.0f}, {30.0f, 30.0f, -5.0f}), {}, 1024, margin, false);

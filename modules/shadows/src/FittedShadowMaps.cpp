@@ -82,7 +82,7 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
         LightProjection projection =
             fitToSamples(light.direction, slices[slice], frame.boxes, resolution, hardMargin,
                          settings_.texelSnapping, softMargin(light), &bounds->slices[slice]);
-        if (!frame.fitIsCamera) {
+        if (!frame.fitIsCamera) { // the pixels shaded are not the fit's samples
             projection.drawnRegion = LightProjection{}.drawnRegion;
         }
         return projection;

@@ -422,7 +422,11 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
     const LightRect& read = visible != nullptr && !visible->empty() ? *visible : samples;
     const glm::vec2 low = glm::clamp((glm::vec2(read.min) - reach - origin) / extent, 0.0f, 1.0f);
     const glm::vec2 high = glm::clamp((glm::vec2(read.max) + reach - origin) / extent, 0.0f, 1.0f);
-    result.drawnRegion = glm::vec4(low, high);
+    const glm::vec4 region(low, high);
+    if (std::isfinite(region.x) && std::isfinite(region.y) && std::isfinite(region.z) &&
+        std::isfinite(region.w)) {
+        result.drawnRegion = region;
+    }
     return result;
 }
 
