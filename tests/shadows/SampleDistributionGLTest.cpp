@@ -206,6 +206,7 @@ struct DrawnRegionCase {
     ShadowTechnique technique;
     glm::vec3 target;     // where the camera looks
     int cascadeCount = 1; // 0: automatic
+    int momentBlurRadius = 0;
 };
 
 void PrintTo(const DrawnRegionCase& c, std::ostream* out) {
@@ -226,6 +227,7 @@ RegionFrame renderApron(const DrawnRegionCase& c, std::optional<FitView> frozenA
     ShadowSettings settings;
     settings.technique = c.technique;
     settings.cascadeCount = c.cascadeCount;
+    settings.momentBlurRadius = c.momentBlurRadius;
     settings.resolution = 1024;
     engine::Engine engine;
     auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
@@ -292,7 +294,8 @@ TEST_P(DrawnRegion, ChangesNoImage) {
 
 // Looking down 8 m ahead: one map; towards the horizon: the automatic cascades. The techniques: one
 // comparison (slope-scaled, normal-offset and its receiver offset), PCF's kernel, GSM's and receiver-plane's
-// gradients, EVSM's blurred moments, PCSS's search and msm-soft's moment mips (the soft reach).
+// gradients, EVSM's moments, unblurred (the default) and blurred over 3 texels, PCSS's search and msm-soft's
+// moment mips (the soft reach).
 INSTANTIATE_TEST_SUITE_P(
     , DrawnRegion,
     ::testing::Values(
@@ -302,6 +305,7 @@ INSTANTIATE_TEST_SUITE_P(
         DrawnRegionCase{"near_gsm", ShadowTechnique::Gsm, {0.0f, 0.0f, -8.0f}},
         DrawnRegionCase{"near_receiver_plane", ShadowTechnique::ReceiverPlaneBias, {0.0f, 0.0f, -8.0f}},
         DrawnRegionCase{"near_evsm", ShadowTechnique::Evsm, {0.0f, 0.0f, -8.0f}},
+        DrawnRegionCase{"near_evsm_blurred", ShadowTechnique::Evsm, {0.0f, 0.0f, -8.0f}, 1, 3},
         DrawnRegionCase{"near_pcss", ShadowTechnique::Pcss, {0.0f, 0.0f, -8.0f}},
         DrawnRegionCase{"near_msm_soft", ShadowTechnique::MsmSoft, {0.0f, 0.0f, -8.0f}},
         DrawnRegionCase{
