@@ -357,6 +357,17 @@ glm::mat4 lightView(const glm::vec3& direction) {
     return lightRotation(direction);
 }
 
+glm::dmat4 textureRectClip(glm::dvec2 low, glm::dvec2 size) {
+    // x' / w = 2 (x_tex - low) / size - 1 with x_tex = (x / w + 1) / 2, so x' = (x + w (1 - 2 low)) / size -
+    // w, linear in clip space.
+    glm::dmat4 crop(1.0);
+    crop[0][0] = 1.0 / size.x;
+    crop[1][1] = 1.0 / size.y;
+    crop[3][0] = (1.0 - 2.0 * low.x) / size.x - 1.0;
+    crop[3][1] = (1.0 - 2.0 * low.y) / size.y - 1.0;
+    return crop;
+}
+
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
                              bool snapToTexels, SoftMargin soft, const LightRect* visible) {

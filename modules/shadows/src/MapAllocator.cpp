@@ -55,25 +55,15 @@ glm::ivec4 drawnTexels(const LightProjection& projection, int side) {
     return {low, glm::max(high - low, glm::ivec2(0))};
 }
 
-glm::mat4 regionClip(const glm::vec4& region) {
-    const glm::vec2 low = 2.0f * glm::vec2(region.x, region.y) - 1.0f;
-    const glm::vec2 high = 2.0f * glm::vec2(region.z, region.w) - 1.0f;
-    const glm::vec2 span = glm::max(high - low, glm::vec2(1e-6f));
-    // x' = (2x - (high + low) w) / span: the region's edges go to -w and w, perspective maps included.
-    glm::mat4 clip(1.0f);
-    clip[0][0] = 2.0f / span.x;
-    clip[1][1] = 2.0f / span.y;
-    clip[3][0] = -(high.x + low.x) / span.x;
-    clip[3][1] = -(high.y + low.y) / span.y;
-    return clip;
-}
-
 void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
                  const LightProjection& projection) {
     const glm::mat4 viewProjection = projection.projection * projection.view;
     program.set("uLightViewProjection", viewProjection);
     program.set("uDepthRange", projection.depthRange);
-    host.drawMeshes(scene, regionClip(projection.drawnRegion) * viewProjection,
+    const glm::dvec2 low(projection.drawnRegion.x, projection.drawnRegion.y);
+    const glm::dvec2 size =
+        glm::max(glm::dvec2(projection.drawnRegion.z, projection.drawnRegion.w) - low, glm::dvec2(1e-6));
+    host.drawMeshes(scene, glm::mat4(textureRectClip(low, size)) * viewProjection,
                     [&](engine::EntityId, const glm::mat4& model) {
                         program.set("uModel", model);
                         return true;

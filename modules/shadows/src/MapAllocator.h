@@ -104,10 +104,6 @@ void clearMapTargets(const ShadowMapArray& maps, GLuint framebuffer, const Shado
 /// the first's x and y, then the width and height (the whole map for the region (0, 0, 1, 1)).
 glm::ivec4 drawnTexels(const LightProjection& projection, int side);
 
-/// @brief Clip space to the clip space of `region` alone (texture coordinates, min xy then max xy): what
-/// lies within the region's part of the map, and only that, lies within the new clip volume.
-glm::mat4 regionClip(const glm::vec4& region);
-
 /// @brief Draws the casters of `scene` seen through `projection` with `program` (the shadow pass's, in use),
 /// culled to the clip volume of its drawnRegion: casters outside it could not write a texel read. Texels
 /// outside the region are the caller's to scissor.

@@ -129,17 +129,10 @@ LightProjection PerspectiveGeometry::pageProjection(int level, glm::ivec2 page, 
     const glm::dvec4 rect(pageRect(level, page, borderTexels));
     const glm::dvec2 low(rect.x, rect.y);
     const glm::dvec2 size = glm::dvec2(rect.z, rect.w) - low;
-    // The crop of texture rectangle [low, low + size]: x' / w = 2 (x_tex - low) / size - 1 with x_tex =
-    // (x / w + 1) / 2, so x' = (x + w (1 - 2 low)) / size - w, linear in clip space.
-    glm::dmat4 crop(1.0);
-    crop[0][0] = 1.0 / size.x;
-    crop[1][1] = 1.0 / size.y;
-    crop[3][0] = (1.0 - 2.0 * low.x) / size.x - 1.0;
-    crop[3][1] = (1.0 - 2.0 * low.y) / size.y - 1.0;
     const glm::dmat4 clipToTexture(glm::dvec4(0.5, 0, 0, 0), glm::dvec4(0, 0.5, 0, 0),
                                    glm::dvec4(0, 0, 0.5, 0), glm::dvec4(0.5, 0.5, 0.5, 1));
     LightProjection result = face;
-    const glm::dmat4 projection = crop * glm::dmat4(face.projection);
+    const glm::dmat4 projection = textureRectClip(low, size) * glm::dmat4(face.projection);
     result.projection = glm::mat4(projection);
     result.worldToShadow = glm::mat4(clipToTexture * projection * glm::dmat4(face.view));
     result.texelScale = face.texelScale * std::ldexp(1.0f, level);

@@ -166,6 +166,11 @@ Aabb shadowableRegion(const glm::vec3& direction, const glm::mat4& cameraViewPro
 /// space, the light looking down -z.
 glm::mat4 lightView(const glm::vec3& direction);
 
+/// @brief Clip space to the clip space of the texture rectangle from `low`, `size` wide (a map's [0,1]
+/// coordinates): the rectangle's edges go to -w and w, so what lies over it, and only that, lies in the new
+/// clip volume, perspective maps included. A virtual page's projection, and the cull volume of a drawnRegion.
+glm::dmat4 textureRectClip(glm::dvec2 low, glm::dvec2 size);
+
 /// @brief Faces of a point light's cube map.
 inline constexpr int kCubeFaces = 6;
 
