@@ -39,6 +39,8 @@ else
     echo "gpu_timing.sh: no X display with a hardware GLX renderer: osgShadow's rows are left out" >&2
 fi
 ./build/bin/gs-shadowbench $(printf -- '--scene %s ' "${scenes[@]}") --defaults --cost-model --frames 30 \
+    --config "slope-scaled-d16:technique=slope-scaled,depthFormat=d16" \
+    --config "slope-scaled-d32f:technique=slope-scaled,depthFormat=d32f" \
     "${peer[@]}" --out "$work/cost-model"
 /usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
 /usr/bin/python3 tools/shadowbench/cost_model.py "$work/cost-model/results.json" \

@@ -164,10 +164,12 @@ fi
 if [ "${only[1]:-cost}" = cost ]; then
 [ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
 # 10. The cost model: every technique at its defaults, timed, on a real model, the generated apron (one mesh) and
-#     the knob, with the reference pass's cost of one more read per fragment on each (--cost-model); then each
+#     the knob, the default technique at the other depth formats too, with the reference pass's cost of one more
+#     read per fragment on each and of one read of maps of other sizes and formats (--cost-model); then each
 #     variant's instructions as Mesa compiles them (MESA_GLSL=dump).
 "$bench" --scene cylinder-engine --scene apron-merged --scene knob --defaults --cost-model --frames 5 \
-    --out "$work/cost-model"
+    --config "slope-scaled-d16:technique=slope-scaled,depthFormat=d16" \
+    --config "slope-scaled-d32f:technique=slope-scaled,depthFormat=d32f" --out "$work/cost-model"
 /usr/bin/python3 tools/shadowbench/nir_counts.py ./build/bin/gs-render "$work/cost-model/nir-counts.json"
 fi
 

@@ -12,8 +12,6 @@ namespace shadowbench {
 
 namespace {
 
-constexpr int kMapSize = 2048;
-
 // The reads sit on a 4-wide grid of texels around the projected point, as a PCF kernel's do, so no two are
 // the same read; their mean is the visibility, so none is optimised away.
 constexpr const char* kDeclarations = R"glsl(
@@ -39,7 +37,7 @@ float gsFetchProbe(vec3 worldPosition) {
     vec3 coord = (gsFetchProbeMatrix * vec4(worldPosition, 1.0)).xyz;
     float sum = 0.0;
     for (int i = 0; i < GS_FETCH_PROBE_COUNT; ++i) {
-        vec2 tap = coord.xy + vec2(float(i % 4), float(i / 4)) * (1.0 / 2048.0);
+        vec2 tap = coord.xy + vec2(float(i % 4), float(i / 4)) / vec2(textureSize(gsFetchProbeMap, 0).xy);
 #ifdef GS_FETCH_PROBE_COMPARE
         sum += texture(gsFetchProbeMap, vec4(tap, 0.0, coord.z));
 #else
@@ -57,8 +55,16 @@ std::string countDefine(int fetches) {
 
 } // namespace
 
-FetchProbe::FetchProbe(FetchKind kind, int fetches, const glm::mat4& worldToMap)
-    : kind_(kind), fetches_(1), worldToMap_(worldToMap) {
+FetchProbe::FetchProbe(FetchKind kind, int fetches, const glm::mat4& worldToMap, ProbeMap map)
+    : kind_(kind), fetches_(1), worldToMap_(worldToMap), mapFormat_(map) {
+    if (map.size < 1 || map.size > 16384) {
+        throw engine::Error("fetch probe: a map of " + std::to_string(map.size) +
+                            " texels a side (1..16384)");
+    }
+    if (map.format != GL_DEPTH_COMPONENT16 && map.format != GL_DEPTH_COMPONENT24 &&
+        map.format != GL_DEPTH_COMPONENT32F) {
+        throw engine::Error("fetch probe: a map format other than D16, D24 or D32F");
+    }
     setFetches(fetches);
 }
 
@@ -75,14 +81,14 @@ void FetchProbe::attach(engine::ModuleHost& host) {
     GLuint texture = 0;
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
     map_ = decltype(map_)(texture);
-    glTextureStorage3D(texture, 1, GL_DEPTH_COMPONENT24, kMapSize, kMapSize, 1);
+    const int side = mapFormat_.size;
+    glTextureStorage3D(texture, 1, mapFormat_.format, side, side, 1);
     // A ramp, so comparisons go both ways over the view (a constant map would compare alike everywhere).
-    std::vector<float> depths(static_cast<std::size_t>(kMapSize) * kMapSize);
+    std::vector<float> depths(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
     for (std::size_t i = 0; i < depths.size(); ++i) {
-        depths[i] = static_cast<float>(i % kMapSize) / kMapSize;
+        depths[i] = static_cast<float>(i % static_cast<std::size_t>(side)) / static_cast<float>(side);
     }
-    glTextureSubImage3D(texture, 0, 0, 0, 0, kMapSize, kMapSize, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                        depths.data());
+    glTextureSubImage3D(texture, 0, 0, 0, 0, side, side, 1, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
     GLuint sampler = 0;
     glCreateSamplers(1, &sampler);
     sampler_ = decltype(sampler_)(sampler);

@@ -94,6 +94,24 @@ std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
     return sizes;
 }
 
+/// A probe map's depth format as the settings name it (ShadowSettings' depthFormat).
+const char* probeFormatName(GLenum format) {
+    return format == GL_DEPTH_COMPONENT16 ? "d16" : format == GL_DEPTH_COMPONENT32F ? "d32f" : "d24";
+}
+
+nlohmann::json probeMapCosts(const std::vector<ProbeMapCost>& costs) {
+    if (costs.empty()) {
+        return nlohmann::json();
+    }
+    nlohmann::json out = nlohmann::json::array();
+    for (const ProbeMapCost& cost : costs) {
+        out.push_back({{"size", cost.map.size},
+                       {"format", probeFormatName(cost.map.format)},
+                       {"oneCompareReadOverheadMs", cost.oneCompareReadOverheadMs}});
+    }
+    return out;
+}
+
 } // namespace
 
 // The eye distance times a pixel's angle for a perspective camera, the view height over the image's for an
@@ -519,11 +537,17 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
         filtered.addModule(std::make_unique<FetchProbe>(FetchKind::Filtered, 1, worldToMap)));
     auto& compareProbe = static_cast<FetchProbe&>(
         compare.addModule(std::make_unique<FetchProbe>(FetchKind::Compare, 1, worldToMap)));
+    std::vector<std::unique_ptr<engine::Engine>> otherMaps;
+    for (const ProbeMap& map : FetchProbe::kOtherMaps) {
+        otherMaps.push_back(std::make_unique<engine::Engine>());
+        otherMaps.back()->addModule(std::make_unique<FetchProbe>(FetchKind::Compare, 1, worldToMap, map));
+    }
     // Rounds alternate every configuration, so a drift of the machine's speed spreads over all of them; each
     // count's figure is its median over the rounds.
     std::vector<double> base;
     std::map<int, std::vector<double>> filteredTimes;
     std::map<int, std::vector<double>> compareTimes;
+    std::vector<std::vector<double>> otherMapOverheads(otherMaps.size());
     for (int round = 0; round < kCostModelRounds; ++round) {
         base.push_back(lightingPass(unshadowed).min);
         for (const int fetches : FetchProbe::kCounts) {
@@ -532,6 +556,9 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
             compareProbe.setFetches(fetches);
             compareTimes[fetches].push_back(lightingPass(compare).min);
         }
+        for (std::size_t m = 0; m < otherMaps.size(); ++m) {
+            otherMapOverheads[m].push_back(lightingPass(*otherMaps[m]).min - base.back());
+        }
     }
     cost.unshadowedLighting = summarise(base);
     std::vector<double> oneReadOverheads;
@@ -539,6 +566,10 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
         oneReadOverheads.push_back(compareTimes[1][round] - base[round]);
     }
     cost.oneCompareReadOverheadMs = summarise(oneReadOverheads).median;
+    for (std::size_t m = 0; m < otherMaps.size(); ++m) {
+        cost.oneCompareReadByMap.push_back(
+            {FetchProbe::kOtherMaps[m], summarise(otherMapOverheads[m]).median});
+    }
     // Least squares over the counts: the slope is one fetch's cost, the intercept the probe's fixed code.
     const auto slope = [](const std::map<int, std::vector<double>>& times) {
         double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
@@ -871,6 +902,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"compareFetchMs", c.compareFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.compareFetchMs)},
              {"oneCompareReadOverheadMs",
               c.oneCompareReadOverheadMs ? nlohmann::json(*c.oneCompareReadOverheadMs) : nlohmann::json()},
+             {"oneCompareReadByMap", probeMapCosts(c.oneCompareReadByMap)},
              {"softTruth", c.softTruth.samplesPerAxis == 0
                                ? nlohmann::json()
                                : nlohmann::json({{"samplesPerAxis", c.softTruth.samplesPerAxis},

@@ -15,13 +15,32 @@ def goal(reads):
     return 1.5 * reads + 2.0
 
 
+def probe_map_line(cost, unit):
+    """One comparison read alone, by the map it reads (SceneCost::oneCompareReadByMap), with 2048² D24's;
+    None when the run did not measure them."""
+    others = cost.get("oneCompareReadByMap")
+    reference = cost.get("oneCompareReadOverheadMs")
+    if not others or reference is None or not unit > 0:
+        return None
+    maps = others + [{"size": 2048, "format": "d24", "oneCompareReadOverheadMs": reference}]
+    maps.sort(key=lambda m: (m["size"] ** 2 * {"d16": 2, "d24": 4, "d32f": 4}[m["format"]], m["format"]))
+    parts = [f"{m['size']}² {m['format'].upper()} {m['oneCompareReadOverheadMs']:.1f} ms "
+             f"({m['oneCompareReadOverheadMs'] / unit:.1f})" for m in maps]
+    smallest = maps[0]
+    ratio = (f" (2048² D24 {reference / smallest['oneCompareReadOverheadMs']:.1f}x {smallest['size']}² "
+             f"{smallest['format'].upper()} here)" if smallest["oneCompareReadOverheadMs"] > 0 else "")
+    return ("That one comparison read, by the map it reads (ms, fetch-equivalents in brackets): " + ", ".join(parts)
+            + ". The shader is the same for every map (D24 and D32F hold 4 bytes a texel, D16 2); what differs is "
+            "the memory a fragment's first read brings in, which grows with the map's bytes" + ratio + ".\n")
+
+
 def section(doc, nir=None):
     """The section's lines from a --cost-model run (and the variants' instruction counts, when given)."""
     variants = (nir or {}).get("variants", {})
     out = ["## Cost model\n",
            f"What the lighting pass costs beyond its fetches. A reference pass (gs-shadowbench --cost-model) makes 1, 2, "
-           f"4, 8 and 16 reads per fragment of a 2048² depth map, where the default technique's map lies, and nothing "
-           f"else; the least-squares slope of its lighting pass over the count is one read's cost on this renderer "
+           f"4, 8 and 16 reads per fragment of a 2048² D24 depth map, where the default technique's map lies, and nothing "
+           f"else (one read also of 512² and 1024² D24 and 2048² D16 and D32F maps); the least-squares slope of its lighting pass over the count is one read's cost on this renderer "
            f"({doc['renderer']}, {doc['width']}x{doc['height']}, {doc['timingMethod']}, the counts alternated over "
            f"5 rounds, each count's fastest frame of a round). A technique's overhead is its lighting pass minus "
            f"the unshadowed one, the two timed back to back in each of 5 rounds and each a round's fastest frame "
@@ -44,6 +63,9 @@ def section(doc, nir=None):
                       f"({cost['oneCompareReadOverheadMs'] / unit:.1f} fetch-equivalents), the least a one-read "
                       f"technique adds here" if cost.get("oneCompareReadOverheadMs") is not None and unit > 0 else "")
                    + ".\n")
+        by_map = probe_map_line(cost, unit)
+        if by_map:
+            out.append(by_map)
         lines = ["| technique | map reads | lighting ms | overhead ms | fetch-equivalents | goal | meets | "
                  "shadow pass ms | lighting instructions | depth instructions |",
                  "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]

@@ -11,16 +11,30 @@ namespace shadowbench {
 /// or a hardware comparison with 2x2 PCF (what `hw-pcf` and the PCF kernels read).
 enum class FetchKind { Filtered, Compare };
 
-/// @brief The cost model's reference: a lighting-pass module that makes exactly `fetches` reads of a 2048²
-/// depth array per light and fragment, at coordinates projected like a shadow map's, and nothing else; the
-/// lighting pass's time against the fetch count gives one fetch's cost on this renderer.
+/// @brief The depth map a probe reads: its side in texels and its internal format (GL_DEPTH_COMPONENT16, 24
+/// or 32F). Its bytes per texel and texels per pixel set how much memory one read per fragment moves.
+struct ProbeMap {
+    int size = 2048;
+    GLenum format = GL_DEPTH_COMPONENT24;
+};
+
+/// @brief The cost model's reference: a lighting-pass module that makes exactly `fetches` reads of a depth
+/// array (ProbeMap, 2048² D24 by default, the default technique's map) per light and fragment, at coordinates
+/// projected like a shadow map's, and nothing else; the lighting pass's time against the fetch count gives
+/// one fetch's cost on this renderer.
 class FetchProbe final : public engine::Module {
 public:
     /// The fetch counts a probe can make (one variant each).
     static constexpr int kCounts[] = {1, 2, 4, 8, 16};
+    /// The maps besides the default's whose one comparison read the cost model measures (SceneCost::
+    /// oneCompareReadByMap): smaller sides, and the other depth formats at 2048².
+    static constexpr ProbeMap kOtherMaps[] = {{512, GL_DEPTH_COMPONENT24},
+                                              {1024, GL_DEPTH_COMPONENT24},
+                                              {2048, GL_DEPTH_COMPONENT16},
+                                              {2048, GL_DEPTH_COMPONENT32F}};
 
     /// @param worldToMap world -> map texture coordinates and depth (a light's orthographic fit).
-    FetchProbe(FetchKind kind, int fetches, const glm::mat4& worldToMap);
+    FetchProbe(FetchKind kind, int fetches, const glm::mat4& worldToMap, ProbeMap map = {});
 
     [[nodiscard]] std::string_view name() const override { return "fetch-probe"; }
     void attach(engine::ModuleHost& host) override;
@@ -35,6 +49,7 @@ private:
     FetchKind kind_;
     int fetches_;
     glm::mat4 worldToMap_;
+    ProbeMap mapFormat_;
     engine::ModuleHost* host_ = nullptr;
     GLuint unit_ = 0;
     engine::gl::GlObject<engine::gl::detail::deleteTexture> map_;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <shadowbench/FetchProbe.h>
 #include <shadowbench/RayTracedVisibility.h>
 #include <shadowbench/ShadowMetrics.h>
 #include <shadowbench/SoftShadowMetrics.h>
@@ -109,6 +110,12 @@ struct SoftTruth {
     double convergenceRmse = -1.0;
 };
 
+/// @brief The reference pass's one comparison read of one probe map (FetchProbe), minus the unshadowed pass.
+struct ProbeMapCost {
+    ProbeMap map;
+    double oneCompareReadOverheadMs = 0.0; ///< the median of the rounds' differences
+};
+
 /// @brief What drawing a scene costs without shadows: its size, our draw calls and unshadowed frame time.
 struct SceneCost {
     std::string scene;
@@ -131,6 +138,9 @@ struct SceneCost {
     /// The reference pass with one comparison read and nothing else, minus the unshadowed pass (the median of
     /// the rounds' differences): the least a one-read variant adds on this renderer. Empty when not measured.
     std::optional<double> oneCompareReadOverheadMs;
+    /// The same for maps of other sizes and formats, which move other amounts of memory per read
+    /// (FetchProbe::kOtherMaps); empty when not measured.
+    std::vector<ProbeMapCost> oneCompareReadByMap;
     /// The scene's ground truth, where it is soft.
     SoftTruth softTruth;
 };
