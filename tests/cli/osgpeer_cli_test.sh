@@ -21,15 +21,18 @@ python=/usr/bin/python3
 # [0, 1] (or -1 for no lit surface), and that the frame is fairly shaded, as white diffuse without ambient
 # gives: umbra pixels (<= 0.02) exist and at least half the lit surface reads 1 (the rest is the technique's
 # own acne and penumbra).
-check_outputs() { # check_outputs NAME PREFIX TECHNIQUE [SHADOW_MAPS [MAP_SIZE]]
-    local name=$1 prefix=$2 technique=$3 maps=${4:-1} mapSize=${5:-512}
-    if ! "$python" - "$prefix" "$technique" "$maps" "$mapSize" <<'PY'; then
+check_outputs() { # check_outputs NAME PREFIX TECHNIQUE [SHADOW_MAPS [MAP_SIZE [ALLOCATOR]]]
+    local name=$1 prefix=$2 technique=$3 maps=${4:-1} mapSize=${5:-512} allocator=${6:-tuned}
+    if ! "$python" - "$prefix" "$technique" "$maps" "$mapSize" "$allocator" <<'PY'; then
 import json, struct, sys
 prefix, technique, maps, map_size = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 report = json.load(open(prefix + ".json"))
 for key in ("technique", "osgClass", "renderer", "timingMethod", "size", "mapSize", "shadowMaps", "camera",
-            "frames", "unshadowedMs", "shadowedMs", "triangles", "drawables", "osgSettings"):
+            "frames", "unshadowedMs", "shadowedMs", "triangles", "drawables", "osgSettings", "allocatorTuned"):
     assert key in report, "JSON lacks " + key
+# Tuned as our renderer is: on a CPU rasteriser only, unless --allocator default.
+software = any(name in report["renderer"] for name in ("llvmpipe", "softpipe", "swrast"))
+assert report["allocatorTuned"] == (software and sys.argv[5] == "tuned"), "allocatorTuned " + str(report)
 assert report["shadowMaps"] == maps, "shadowMaps %d, wanted %d" % (report["shadowMaps"], maps)
 assert report["camera"]["projection"] == "perspective" and 0 < report["camera"]["near"] < report["camera"]["far"]
 settings = report["osgSettings"]
@@ -132,6 +135,10 @@ expect render-flat 0 "vdsm \(osgShadow::.*wrote" -- \
     "$peer" --scene "$out/flat.gltf" --technique vdsm --size 160x120 --map-size 512 --frames 2 --warmup 1 \
     --out "$out/flat-vdsm"
 check_outputs render-flat "$out/flat-vdsm" vdsm
+expect render-default-allocator 0 "vdsm \(osgShadow::.*wrote" -- \
+    "$peer" --scene "$out/flat.gltf" --technique vdsm --size 160x120 --map-size 512 --frames 2 --warmup 1 \
+    --allocator default --out "$out/flat-vdsm-default-allocator"
+check_outputs render-default-allocator "$out/flat-vdsm-default-allocator" vdsm 1 512 default
 ls -a "$out" | grep -q '\.tmp' && { echo "FAIL temporary file left behind"; failures=$((failures + 1)); }
 
 expect missingFile 1 "nope\.gltf: file not found" -- "$peer" --scene "$out/nope.gltf" --out "$out/x"
@@ -158,6 +165,8 @@ expect badMapSize 2 "--map-size: '0' is not an integer in \[16, 16384\]" -- \
     "$peer" --scene "$scene" --map-size 0 --out "$out/x"
 expect badSize 2 "--size: 'axb' is not WIDTHxHEIGHT|--size: 'a' is not an integer" -- \
     "$peer" --scene "$scene" --size axb --out "$out/x"
+expect badAllocator 2 "--allocator: 'fast' is not tuned or default" -- \
+    "$peer" --scene "$scene" --allocator fast --out "$out/x"
 expect missingOut 2 "--out is required" -- "$peer" --scene "$scene"
 expect unknownOption 2 "unknown option '--bogus'" -- "$peer" --bogus
 expect noDisplay 1 "no X display: DISPLAY is not set" -- env -u DISPLAY "$peer" --scene "$scene" --out "$out/x"

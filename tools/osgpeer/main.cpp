@@ -8,6 +8,7 @@
 #include <cli/OptionValues.h>
 #include <content/GltfLoader.h>
 #include <engine/Error.h>
+#include <engine/GlContext.h>
 #include <engine/Image.h>
 
 #include <nlohmann/json.hpp>
@@ -67,6 +68,8 @@ struct Options {
     int warmup = 5;
     std::string outPrefix;
     std::string surface = "auto";
+    /// Raise glibc's thresholds on a CPU rasteriser as our engine does (engine::raiseAllocatorThresholds).
+    bool tuneAllocator = true;
     bool verbose = false;
 };
 
@@ -90,6 +93,7 @@ constexpr const char* kUsage = R"(usage: gs-osgshadow --scene FILE.gltf --out PR
   --warmup N       untimed frames before each pass, 0..1000        [5]
   --content DIR    folder that scene names resolve in              [installed or source content/]
   --surface S      auto (pbuffer, else window), pbuffer or window  [auto]
+  --allocator A    tuned (mallopt on CPU rasterisers, as gs-render does) or default [tuned]
   --verbose        pass OpenSceneGraph's warnings through to stderr
   --help           this text
 Needs an X display with GLX (e.g. xvfb-run -a -s "-screen 0 1280x1024x24").)";
@@ -170,6 +174,12 @@ Options parse(int argc, char** argv) {
             if (options.surface != "auto" && options.surface != "pbuffer" && options.surface != "window") {
                 usageError("--surface: unknown surface '" + options.surface + "' (auto, pbuffer, window)");
             }
+        } else if (arg == "--allocator") {
+            const std::string name = value();
+            if (name != "tuned" && name != "default") {
+                usageError("--allocator: '" + name + "' is not tuned or default");
+            }
+            options.tuneAllocator = name == "tuned";
         } else if (arg == "--verbose") {
             options.verbose = true;
         } else {
@@ -564,6 +574,15 @@ int main(int argc, char** argv) {
             throw RunError("the OpenGL context could not be realized on X display '" +
                            std::string(std::getenv("DISPLAY")) + "'");
         }
+        // Before the first frame, so that both passes run on the allocator our renderer's frames run on: with
+        // glibc's own, the pass that runs first pays llvmpipe's per-frame buffers as fresh mappings until the
+        // dynamic threshold has grown past them.
+        bool allocatorTuned = false;
+        if (options.tuneAllocator && context.context->makeCurrent()) {
+            const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+            allocatorTuned =
+                renderer && engine::isSoftwareRendererName(renderer) && engine::raiseAllocatorThresholds();
+        }
 
         osgpeer::RgbFrame unshadowedFrame;
         osgpeer::RgbFrame shadowedFrame;
@@ -594,6 +613,7 @@ int main(int argc, char** argv) {
             {"drawables", scene.drawables},
             {"scene", path.string()},
             {"surface", context.pbuffer ? "pbuffer" : "window"},
+            {"allocatorTuned", allocatorTuned},
             {"osgVersion", osgGetVersion()},
             {"osgSettings", technique.settings},
         };

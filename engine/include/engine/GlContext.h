@@ -3,8 +3,18 @@
 #include <glm/vec2.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace engine {
+
+/// @brief True for the GL_RENDERER string of a CPU rasteriser (llvmpipe, softpipe, swrast).
+[[nodiscard]] bool isSoftwareRendererName(std::string_view renderer);
+
+/// @brief Raises glibc's mmap and trim thresholds for the whole process (mallopt; ContextOptions::
+/// tuneAllocatorForSoftwareRenderer says why), as a context on a CPU rasteriser does at start-up. For
+/// programs whose contexts are not ours (the OpenSceneGraph peer), so that both renderers run on the same
+/// allocator. Returns whether both thresholds took.
+bool raiseAllocatorThresholds();
 
 /// @brief Options shared by every context kind.
 struct ContextOptions {
