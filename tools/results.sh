@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only virtual|soft|cost|sizing|still] [work folder, default out/results]
-# --only virtual runs step 11 alone (with the osgShadow peer's VDSM rows it reads), --only soft step 12, --only
-# cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and replaces only that step's
-# section of docs/RESULTS.md ("Virtual maps", "Soft shadows", "Cost model", "Maps sized to the view", "A still
-# view keeps its maps"), which then says so.
+# Usage: bash tools/results.sh [--only real|virtual|soft|cost|sizing|still] [work folder, default out/results]
+# --only real runs steps 4 to 6 alone, --only virtual step 11 (with the osgShadow peer's VDSM rows it reads),
+# --only soft step 12, --only cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and
+# replaces only that step's section of docs/RESULTS.md ("Real models", "Virtual maps", "Soft shadows", "Cost
+# model", "Maps sized to the view", "A still view keeps its maps"), which then says so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        virtual | soft | cost | sizing | still) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2; exit 2 ;;
+        real | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'real', 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2; exit 2 ;;
     esac
     shift 2
 fi
@@ -37,6 +37,45 @@ peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults,
         peer_as "$scene" "$technique" --technique "$technique"
     done
 }
+real_models_steps() { # steps 4 to 6, the "Real models" section, which the full run and --only real run
+    # 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
+    #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
+    bash tools/corpus.sh
+    for model in "${corpus[@]}"; do
+        peer "corpus/$model.glb" vdsm sm lispsm ssm
+    done
+    "$bench" $(printf -- '--scene %s ' "${corpus[@]}") --taps 4 --resolutions 2048 --frames 5 --peer "$work/osg" \
+        --out "$work/real"
+
+    # 5. Frame-time scaling from 10k to 1M triangles (generated hills): ours without shadows and with gsm, the peer
+    #    without shadows and with ViewDependentShadowMap.
+    sweep=()
+    for triangles in 10000 100000 1000000; do
+        peer "corpus/sweep/hills-$triangles.glb" vdsm
+        sweep+=(--scene "corpus/sweep/hills-$triangles.glb")
+    done
+    "$bench" "${sweep[@]}" --techniques gsm --resolutions 2048 --frames 5 --peer "$work/osg" --out "$work/scaling"
+
+    # 6. What the renderer's options do, side by side in one run (gs-render, whole frames): the depth pre-pass, glibc's
+    #    default allocator thresholds instead of the tuned ones, and meshes drawn whole instead of in chunks; the
+    #    defaults run twice, so the table shows how far two identical runs differ. Every frame draws its shadow maps
+    #    (--redraw-maps), as a moving view's do, so the shadow pass's draws are among what the options change.
+    for model in knob fzk-haus cylinder-engine suzanne terrain; do
+        for technique in none gsm pcf-gsm-average; do
+            for variant in plain prepass default-allocator unchunked plain-again; do
+                case $variant in
+                    plain | plain-again) options=() ;;
+                    prepass) options=(--depth-prepass) ;;
+                    default-allocator) options=(--allocator default) ;;
+                    unchunked) options=(--chunk-triangles 16777216) ;;
+                esac
+                ./build/bin/gs-render --scene "$model" --technique "$technique" --size 640x480 --frames 15 --redraw-maps \
+                    "${options[@]}" --out "$work/engine/$model/$technique-$variant" >/dev/null
+            done
+        done
+    done
+}
+
 if [ ${#only[@]} -eq 0 ]; then # steps 1-10: the full run
 # 1. Trade-off sweep on the default scene: every technique, tap counts and map sizes.
 "$bench" --scene knob --taps 2,4,6 --resolutions 512,1024,2048 --frames 7 --out "$work/knob-sweep"
@@ -70,42 +109,7 @@ reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false,gra
     --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,resolution=1024" \
     --out "$work/filtered"
 
-# 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
-#    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
-bash tools/corpus.sh
-for model in "${corpus[@]}"; do
-    peer "corpus/$model.glb" vdsm sm lispsm ssm
-done
-"$bench" $(printf -- '--scene %s ' "${corpus[@]}") --taps 4 --resolutions 2048 --frames 5 --peer "$work/osg" \
-    --out "$work/real"
-
-# 5. Frame-time scaling from 10k to 1M triangles (generated hills): ours without shadows and with gsm, the peer
-#    without shadows and with ViewDependentShadowMap.
-sweep=()
-for triangles in 10000 100000 1000000; do
-    peer "corpus/sweep/hills-$triangles.glb" vdsm
-    sweep+=(--scene "corpus/sweep/hills-$triangles.glb")
-done
-"$bench" "${sweep[@]}" --techniques gsm --resolutions 2048 --frames 5 --peer "$work/osg" --out "$work/scaling"
-
-# 6. What the renderer's options do, side by side in one run (gs-render, whole frames): the depth pre-pass, glibc's
-#    default allocator thresholds instead of the tuned ones, and meshes drawn whole instead of in chunks; the
-#    defaults run twice, so the table shows how far two identical runs differ. Every frame draws its shadow maps
-#    (--redraw-maps), as a moving view's do, so the shadow pass's draws are among what the options change.
-for model in knob fzk-haus cylinder-engine suzanne terrain; do
-    for technique in none gsm pcf-gsm-average; do
-        for variant in plain prepass default-allocator unchunked plain-again; do
-            case $variant in
-                plain | plain-again) options=() ;;
-                prepass) options=(--depth-prepass) ;;
-                default-allocator) options=(--allocator default) ;;
-                unchunked) options=(--chunk-triangles 16777216) ;;
-            esac
-            ./build/bin/gs-render --scene "$model" --technique "$technique" --size 640x480 --frames 15 --redraw-maps \
-                "${options[@]}" --out "$work/engine/$model/$technique-$variant" >/dev/null
-        done
-    done
-done
+real_models_steps
 
 # 7. Defaults: every technique at its defaults on every content scene and real model, under the scene's own light
 #    and a sweep of azimuths x elevations down to 1° above the horizon; accuracy only (the Defaults table).
@@ -153,6 +157,8 @@ done
     --accuracy-only --size 320x240 --shimmer-path 16 --config "unsnapped:texelSnapping=false,resolution=2048" \
     --config "bounds:directionalFit=bounds,resolution=2048" --out "$work/path-shimmer"
 
+elif [ "${only[1]}" = real ]; then
+    real_models_steps
 elif [ "${only[1]}" = virtual ]; then
     # The peer rows step 11 reads: VDSM on its scenes the peer has (step 4 runs these among the others).
     bash tools/corpus.sh
