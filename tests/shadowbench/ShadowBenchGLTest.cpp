@@ -316,6 +316,39 @@ TEST(TexelDensityGLTest, TheDensityViewShowsTheFootprintsTheBenchMeasures) {
 // pixel (up to 0.7 pixels off the reprojected point) straddles where the truth's edge is not. Six frames move
 // the image about 2 pixels per step, so a comparison with the same pixel instead of the reprojected one finds
 // no pixel of the same surface and measures 0; one that ignores the truth measures 1.5e-3 with the 2048² map.
+TEST(WalkGLTest, TimesEveryConfigurationsWalkAndCountsVirtualPages) {
+    const engine::HeadlessContext& context = glTestContext();
+    BenchOptions options;
+    options.size = {160, 120};
+    options.walkFrames = 3;
+    const auto scenePath = std::filesystem::path(CONTENT_DIR) / "scenes" / "knob.gltf";
+    shadows::ShadowSettings fitted;
+    shadows::ShadowSettings virtualMaps;
+    virtualMaps.mapAllocation = shadows::MapAllocation::Virtual;
+    {
+        const ShadowBench bench(context, options);
+        const auto scene = bench.prepare("knob", scenePath);
+        BenchResult walkingFitted;
+        bench.measureWalk(*scene, fitted, walkingFitted);
+        EXPECT_GT(walkingFitted.walkFrame.median, 0.0);
+        EXPECT_LE(walkingFitted.walkFrame.min, walkingFitted.walkFrame.median);
+        EXPECT_LE(walkingFitted.walkFrame.median, walkingFitted.walkFrame.max);
+        EXPECT_LT(walkingFitted.walkTexelsPerFrame, 0.0); // pages: virtual maps only
+        BenchResult walkingVirtual;
+        walkingVirtual.virtualMaps = true;
+        bench.measureWalk(*scene, virtualMaps, walkingVirtual);
+        EXPECT_GT(walkingVirtual.walkFrame.median, 0.0);
+        EXPECT_GE(walkingVirtual.walkTexelsPerFrame, 0.0);
+        EXPECT_GE(walkingVirtual.walkTexelsPerFrameMax, walkingVirtual.walkTexelsPerFrame);
+    }
+    options.timing = false;
+    const ShadowBench untimed(context, options);
+    const auto scene = untimed.prepare("knob", scenePath);
+    BenchResult walking;
+    untimed.measureWalk(*scene, fitted, walking);
+    EXPECT_LT(walking.walkFrame.median, 0.0); // accuracy-only runs time nothing
+}
+
 TEST(PathShimmerGLTest, AFineSnappedMapBarelyFlickersAndACoarseOneFlickersMore) {
     const engine::HeadlessContext& context = glTestContext();
     BenchOptions options;

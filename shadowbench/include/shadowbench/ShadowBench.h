@@ -80,9 +80,12 @@ struct BenchResult {
     shadows::VirtualPageStats coldPages;
     shadows::VirtualPageStats warmPages;
     /// Virtual maps along the walk (BenchOptions::walkFrames): texels drawn per frame after the first, mean
-    /// and largest; negative when not measured.
+    /// and largest; negative when not measured or not virtual.
     double walkTexelsPerFrame = -1.0;
     double walkTexelsPerFrameMax = -1.0;
+    /// The walk's frames after the first, timed as `frame` is (negative medians when not timed or no walk):
+    /// what a moving view's frame costs, with whatever the maps keep from the frame before.
+    PassTiming walkFrame{-1.0, -1.0, -1.0};
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
     /// candidates); negative for every other configuration.
     double fullKernelFraction = -1.0;
@@ -192,8 +195,8 @@ struct BenchOptions {
     /// Frames of the camera path of the path shimmer measurement (measurePathShimmer); 0 does not measure it.
     /// Default 0.
     int pathFrames = 0;
-    /// Frames of the walk (measureWalk): virtual maps' pages drawn per frame while the camera walks; 0 does
-    /// not measure it. Default 0.
+    /// Frames of the walk (measureWalk): each configuration's frame time while the camera walks, and virtual
+    /// maps' pages drawn per frame; 0 does not measure it. Default 0.
     int walkFrames = 0;
     /// Whether measureCost also measures the cost model (SceneCost::filteredFetchMs). Default false.
     bool costModel = false;
@@ -293,10 +296,10 @@ public:
     /// 8e-4 with 256²).
     [[nodiscard]] double measurePathShimmer(const BenchScene& scene,
                                             const shadows::ShadowSettings& settings) const;
-    /// @brief Virtual maps while the camera walks: it moves along its view direction, level with the ground
-    /// (world y up), at 1.5 units a second at 30 frames a second (a walker's 1.5 m/s where a unit is a
-    /// metre), for BenchOptions::walkFrames frames; fills the result's texels drawn per frame after the
-    /// first.
+    /// @brief The camera walks: it moves along its view direction, level with the ground (world y up), at 1.5
+    /// units a second at 30 frames a second (a walker's 1.5 m/s where a unit is a metre), for
+    /// BenchOptions::walkFrames frames; fills the result's walk frame times (when timing) and, for virtual
+    /// maps, the texels drawn per frame after the first.
     void measureWalk(const BenchScene& scene, const shadows::ShadowSettings& settings,
                      BenchResult& result) const;
 
