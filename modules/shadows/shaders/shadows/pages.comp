@@ -54,18 +54,23 @@ bool gsSurfaceAt(ivec2 texel, out vec3 position) {
     return true;
 }
 
-// The screen derivative of the position along `step`: the shorter one-sided difference, so a pixel beside a
-// silhouette measures its own surface, not the jump to the one behind.
-bool gsDerivative(ivec2 texel, ivec2 step, vec3 centre, out vec3 derivative) {
-    vec3 forward;
-    vec3 backward;
-    bool hasForward = gsSurfaceAt(texel + step, forward);
-    bool hasBackward = gsSurfaceAt(texel - step, backward);
+const int GS_BLOCK = 4;
+// An invocation's block of pixels with a border of one: each pixel's derivatives read its four neighbours, so
+// every position of the block and its border is reconstructed once, not once for each pixel that reads it.
+const int GS_SPAN = GS_BLOCK + 2;
+vec3 gsPositions[GS_SPAN * GS_SPAN];
+bool gsSurfaces[GS_SPAN * GS_SPAN];
+
+// The screen derivative of the position at span index `centre` along `stride` (1: x, GS_SPAN: y): the shorter
+// one-sided difference, so a pixel beside a silhouette measures its own surface, not the jump to the one behind.
+bool gsDerivative(int centre, int stride, out vec3 derivative) {
+    bool hasForward = gsSurfaces[centre + stride];
+    bool hasBackward = gsSurfaces[centre - stride];
     if (!hasForward && !hasBackward) {
         return false;
     }
-    vec3 ahead = forward - centre;
-    vec3 behind = centre - backward;
+    vec3 ahead = gsPositions[centre + stride] - gsPositions[centre];
+    vec3 behind = gsPositions[centre] - gsPositions[centre - stride];
     derivative = !hasBackward || (hasForward && dot(ahead, ahead) <= dot(behind, behind)) ? ahead : behind;
     return true;
 }
@@ -79,8 +84,6 @@ void gsMark(int levelIndex, ivec2 page) {
         atomicOr(requests[bit >> 5], 1u << (bit & 31u));
     }
 }
-
-const int GS_BLOCK = 4;
 
 // The pages of a spot map or cube face the pixel at `position` (screen derivatives dPdx, dPdy, facet `normal`)
 // reads.
@@ -129,17 +132,24 @@ void gsMarkPerspective(vec3 position, vec3 dPdx, vec3 dPdy, vec3 normal, float p
 
 void main() {
     ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * GS_BLOCK;
+    for (int y = 0; y < GS_SPAN; ++y) {
+        for (int x = 0; x < GS_SPAN; ++x) {
+            int i = y * GS_SPAN + x;
+            bool corner = (x == 0 || x == GS_SPAN - 1) && (y == 0 || y == GS_SPAN - 1); // no pixel reads these
+            gsPositions[i] = vec3(0.0);
+            gsSurfaces[i] = !corner && gsSurfaceAt(origin + ivec2(x - 1, y - 1), gsPositions[i]);
+        }
+    }
     mat3 toLight = mat3(uWorldToLight);
     for (int dy = 0; dy < GS_BLOCK; ++dy) {
         for (int dx = 0; dx < GS_BLOCK; ++dx) {
-            ivec2 texel = origin + ivec2(dx, dy);
-            vec3 position;
+            int centre = (dy + 1) * GS_SPAN + dx + 1;
             vec3 dPdx;
             vec3 dPdy;
-            if (!gsSurfaceAt(texel, position) || !gsDerivative(texel, ivec2(1, 0), position, dPdx) ||
-                !gsDerivative(texel, ivec2(0, 1), position, dPdy)) {
+            if (!gsSurfaces[centre] || !gsDerivative(centre, 1, dPdx) || !gsDerivative(centre, GS_SPAN, dPdy)) {
                 continue;
             }
+            vec3 position = gsPositions[centre];
             // The facet, turned towards the camera: lit where it faces the light too.
             vec3 normal = cross(dPdx, dPdy);
             normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
