@@ -307,7 +307,7 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     if (options_.pathFrames > 0) {
         result.pathShimmer = measurePathShimmer(scene, config.settings);
     }
-    if (options_.walkFrames > 0) {
+    if (options_.walkFrames > 0 && (options_.timing || result.virtualMaps)) { // else it would measure nothing
         measureWalk(scene, config.settings, result);
     }
     return result;

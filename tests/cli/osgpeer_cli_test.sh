@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of gs-osgshadow (the OpenSceneGraph peer): real vdsm, sm, pssm and two-map vdsm renders
 # whose outputs must parse and show both shadow and light, and each bad input's message and exit status.
-# usage: osgpeer_cli_test.sh GS_OSGSHADOW CONTENT_DIR OUT_DIR
+# usage: osgpeer_cli_test.sh GS_OSGSHADOW CONTENT_DIR OUT_DIR [MALLOPT_TAKES]
+# MALLOPT_TAKES: 1 (the default) where glibc's allocator serves the peer, 0 under the sanitizers' allocator.
 # Needs an X display: without DISPLAY it reruns itself under xvfb-run, or exits 77 (skipped) saying so.
 set -u
 if [[ -z ${DISPLAY:-} ]]; then
@@ -11,6 +12,7 @@ fi
 peer=$1
 content=$2
 out=$3
+mallopt_takes=${4:-1}
 rm -rf "$out"
 mkdir -p "$out"
 source "$(dirname "$0")/expect.sh"
@@ -23,16 +25,17 @@ python=/usr/bin/python3
 # own acne and penumbra).
 check_outputs() { # check_outputs NAME PREFIX TECHNIQUE [SHADOW_MAPS [MAP_SIZE [ALLOCATOR]]]
     local name=$1 prefix=$2 technique=$3 maps=${4:-1} mapSize=${5:-512} allocator=${6:-tuned}
-    if ! "$python" - "$prefix" "$technique" "$maps" "$mapSize" "$allocator" <<'PY'; then
+    if ! "$python" - "$prefix" "$technique" "$maps" "$mapSize" "$allocator" "$mallopt_takes" <<'PY'; then
 import json, struct, sys
 prefix, technique, maps, map_size = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 report = json.load(open(prefix + ".json"))
 for key in ("technique", "osgClass", "renderer", "timingMethod", "size", "mapSize", "shadowMaps", "camera",
             "frames", "unshadowedMs", "shadowedMs", "triangles", "drawables", "osgSettings", "allocatorTuned"):
     assert key in report, "JSON lacks " + key
-# Tuned as our renderer is: on a CPU rasteriser only, unless --allocator default.
+# Tuned as our renderer is: on a CPU rasteriser only, unless --allocator default or mallopt cannot take.
 software = any(name in report["renderer"] for name in ("llvmpipe", "softpipe", "swrast"))
-assert report["allocatorTuned"] == (software and sys.argv[5] == "tuned"), "allocatorTuned " + str(report)
+expected = software and sys.argv[5] == "tuned" and sys.argv[6] == "1"
+assert report["allocatorTuned"] == expected, "allocatorTuned " + str(report)
 assert report["shadowMaps"] == maps, "shadowMaps %d, wanted %d" % (report["shadowMaps"], maps)
 assert report["camera"]["projection"] == "perspective" and 0 < report["camera"]["near"] < report["camera"]["far"]
 settings = report["osgSettings"]
