@@ -3,6 +3,15 @@
 
 #include <gtest/gtest.h>
 
+// GCC says AddressSanitizer is on with __SANITIZE_ADDRESS__, Clang 14 only through __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define GS_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GS_ADDRESS_SANITIZER 1
+#endif
+#endif
+
 namespace {
 
 TEST(IsSoftwareRendererName, KnowsMesasCpuRasterisers) {
@@ -15,7 +24,7 @@ TEST(IsSoftwareRendererName, KnowsMesasCpuRasterisers) {
 }
 
 TEST(RaiseAllocatorThresholds, TakesOnGlibcsAllocatorOnly) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GS_ADDRESS_SANITIZER)
     // AddressSanitizer's allocator stands in for glibc's and refuses mallopt: nothing is tuned, and it says so.
     EXPECT_FALSE(engine::raiseAllocatorThresholds());
 #else
