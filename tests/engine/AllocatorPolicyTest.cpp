@@ -25,7 +25,7 @@ TEST(IsSoftwareRendererName, KnowsMesasCpuRasterisers) {
 
 TEST(RaiseAllocatorThresholds, TakesOnGlibcsAllocatorOnly) {
 #if defined(GS_ADDRESS_SANITIZER)
-    // AddressSanitizer's allocator stands in for glibc's and refuses mallopt: nothing is tuned, and it says so.
+    // AddressSanitizer's allocator stands in for glibc's and refuses mallopt: nothing is tuned, as it says.
     EXPECT_FALSE(engine::raiseAllocatorThresholds());
 #else
     // Both values are within what glibc accepts on 64-bit, so both calls succeed (and may repeat).
