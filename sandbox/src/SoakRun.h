@@ -3,6 +3,7 @@
 #include "CommandLine.h"
 #include "SceneCatalog.h"
 
+#include <engine/AddressSanitizer.h>
 #include <engine/Components.h>
 #include <engine/gl/GlObject.h>
 
@@ -21,7 +22,7 @@ inline constexpr const auto& kSoakLightTypes = engine::kLightTypes;
 /// the second shows the steady state the rest must keep.
 inline constexpr int kSoakWarmUpCycles = 2;
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GS_ADDRESS_SANITIZER)
 /// @brief Not judged under AddressSanitizer: freed blocks wait in its quarantine (256 MiB by default) before
 /// they are reused, so RSS moves by the size of what was freed last (shadow map arrays are 16-192 MiB) and
 /// says nothing about leaks; LeakSanitizer checks those at exit.

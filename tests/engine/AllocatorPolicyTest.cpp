@@ -1,16 +1,8 @@
 // Which renderers count as CPU rasterisers, and the allocator thresholds raised for them (no GL context).
+#include <engine/AddressSanitizer.h>
 #include <engine/GlContext.h>
 
 #include <gtest/gtest.h>
-
-// GCC says AddressSanitizer is on with __SANITIZE_ADDRESS__, Clang 14 only through __has_feature.
-#if defined(__SANITIZE_ADDRESS__)
-#define GS_ADDRESS_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define GS_ADDRESS_SANITIZER 1
-#endif
-#endif
 
 namespace {
 
