@@ -2,6 +2,7 @@
 
 #include <engine/Error.h>
 #include <engine/gl/Program.h>
+#include <shadows/ShadowPlan.h>
 
 #include <algorithm>
 #include <iterator>
@@ -61,9 +62,8 @@ FetchProbe::FetchProbe(FetchKind kind, int fetches, const glm::mat4& worldToMap,
         throw engine::Error("fetch probe: a map of " + std::to_string(map.size) +
                             " texels a side (1..16384)");
     }
-    if (map.format != GL_DEPTH_COMPONENT16 && map.format != GL_DEPTH_COMPONENT24 &&
-        map.format != GL_DEPTH_COMPONENT32F) {
-        throw engine::Error("fetch probe: a map format other than D16, D24 or D32F");
+    if (shadows::toString(map.format) == "?") {
+        throw engine::Error("fetch probe: a map format other than d16, d24 or d32f");
     }
     setFetches(fetches);
 }
@@ -82,7 +82,7 @@ void FetchProbe::attach(engine::ModuleHost& host) {
     glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
     map_ = decltype(map_)(texture);
     const int side = mapFormat_.size;
-    glTextureStorage3D(texture, 1, mapFormat_.format, side, side, 1);
+    glTextureStorage3D(texture, 1, shadows::glDepthFormat(mapFormat_.format), side, side, 1);
     // A ramp, so comparisons go both ways over the view (a constant map would compare alike everywhere).
     std::vector<float> depths(static_cast<std::size_t>(side) * static_cast<std::size_t>(side));
     for (std::size_t i = 0; i < depths.size(); ++i) {

@@ -109,6 +109,12 @@ std::optional<PeerRun> loadPeerRun(const std::filesystem::path& folder, const st
     run.shadowMaps = document.value("shadowMaps", 1);
     run.shadowed = timing(document, "shadowedMs", jsonPath);
     run.unshadowed = timing(document, "unshadowedMs", jsonPath);
+    if (const auto tuned = document.find("allocatorTuned"); tuned != document.end()) {
+        if (!tuned->is_boolean()) {
+            throw engine::Error(jsonPath.string() + ": allocatorTuned is not true or false");
+        }
+        run.allocatorTuned = tuned->get<bool>();
+    }
     run.visibility = readPfm(folder / scene / (technique + ".visibility.pfm"), size);
     return run;
 }

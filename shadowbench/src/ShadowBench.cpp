@@ -41,18 +41,23 @@ PassTiming summarise(std::vector<double> samples) {
     return {samples[samples.size() / 2], samples.front(), samples.back()};
 }
 
-/// Whole frames after one warm-up frame: glFinish + steady clock around each, like gs-render.
+/// One whole frame's milliseconds: glFinish + steady clock around it, like gs-render.
+double timedFrame(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
+                  engine::RenderTarget& target) {
+    const auto start = std::chrono::steady_clock::now();
+    engine.renderFrame(scene, camera, target);
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Whole frames after one warm-up frame.
 PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
                       engine::RenderTarget& target, int frames) {
     engine.renderFrame(scene, camera, target);
     glFinish();
     std::vector<double> times;
     for (int frame = 0; frame < std::max(frames, 1); ++frame) {
-        const auto start = std::chrono::steady_clock::now();
-        engine.renderFrame(scene, camera, target);
-        glFinish();
-        times.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        times.push_back(timedFrame(engine, scene, camera, target));
     }
     return summarise(times);
 }
@@ -94,11 +99,6 @@ std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
     return sizes;
 }
 
-/// A probe map's depth format as the settings name it (ShadowSettings' depthFormat).
-const char* probeFormatName(GLenum format) {
-    return format == GL_DEPTH_COMPONENT16 ? "d16" : format == GL_DEPTH_COMPONENT32F ? "d32f" : "d24";
-}
-
 nlohmann::json probeMapCosts(const std::vector<ProbeMapCost>& costs) {
     if (costs.empty()) {
         return nlohmann::json();
@@ -106,7 +106,7 @@ nlohmann::json probeMapCosts(const std::vector<ProbeMapCost>& costs) {
     nlohmann::json out = nlohmann::json::array();
     for (const ProbeMapCost& cost : costs) {
         out.push_back({{"size", cost.map.size},
-                       {"format", probeFormatName(cost.map.format)},
+                       {"format", shadows::toString(cost.map.format)},
                        {"oneCompareReadOverheadMs", cost.oneCompareReadOverheadMs}});
     }
     return out;
@@ -339,12 +339,9 @@ void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSett
         pose.translation = glm::vec3(start[3]) + forward * (kStepPerFrame * static_cast<float>(frame));
         moving.entity(scene.camera_).transform = pose;
         // The first frame, cold (programs compiled, every page drawn), is the walk's start, not timed.
-        const auto begin = std::chrono::steady_clock::now();
-        engine.renderFrame(moving, scene.camera_, target);
-        glFinish();
+        const double milliseconds = timedFrame(engine, moving, scene.camera_, target);
         if (frame > 0) {
-            times.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count());
+            times.push_back(milliseconds);
             const auto texels = static_cast<double>(module.stats().pages.texelsRendered);
             sum += texels;
             largest = std::max(largest, texels);
@@ -927,7 +924,9 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                            ? nlohmann::json()
                                            : nlohmann::json({{"median", c.peerUnshadowedFrame.median},
                                                              {"min", c.peerUnshadowedFrame.min},
-                                                             {"max", c.peerUnshadowedFrame.max}})}});
+                                                             {"max", c.peerUnshadowedFrame.max}})},
+             {"peerAllocatorTuned",
+              c.peerAllocatorTuned ? nlohmann::json(*c.peerAllocatorTuned) : nlohmann::json()}});
     }
     document["scenes"] = sceneCosts;
     return document.dump(2) + "\n";

@@ -20,11 +20,13 @@ TEST(FetchProbe, TakesEveryMapTheCostModelMeasures) {
 }
 
 TEST(FetchProbe, RefusesMapsAndCountsItCannotMake) {
-    EXPECT_THROW(FetchProbe(FetchKind::Compare, 1, glm::mat4(1.0f), {0, GL_DEPTH_COMPONENT24}),
+    EXPECT_THROW(FetchProbe(FetchKind::Compare, 1, glm::mat4(1.0f), {0, shadows::DepthFormat::D24}),
                  engine::Error);
-    EXPECT_THROW(FetchProbe(FetchKind::Compare, 1, glm::mat4(1.0f), {32768, GL_DEPTH_COMPONENT24}),
+    EXPECT_THROW(FetchProbe(FetchKind::Compare, 1, glm::mat4(1.0f), {32768, shadows::DepthFormat::D24}),
                  engine::Error);
-    EXPECT_THROW(FetchProbe(FetchKind::Compare, 1, glm::mat4(1.0f), {512, GL_RGBA8}), engine::Error);
+    EXPECT_THROW(
+        FetchProbe(FetchKind::Compare, 1, glm::mat4(1.0f), {512, static_cast<shadows::DepthFormat>(7)}),
+        engine::Error);
     EXPECT_THROW(FetchProbe(FetchKind::Compare, 3, glm::mat4(1.0f)), engine::Error);
     FetchProbe probe(FetchKind::Filtered, 1, glm::mat4(1.0f));
     EXPECT_THROW(probe.setFetches(0), engine::Error);

@@ -2,6 +2,8 @@
 // a run's JSON gives (no GL).
 #include <shadowbench/PeerRun.h>
 
+#include <engine/Error.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -79,4 +81,18 @@ TEST(PeerRunTest, ReadsShadowMapsAndDefaultsToOneForOlderRuns) {
     ASSERT_TRUE(older.has_value());
     EXPECT_EQ(older->shadowMaps, 1);
     EXPECT_FALSE(loadPeerRun(folder, "torus", "sm", {2, 1}).has_value());
+}
+
+TEST(PeerRunTest, ReadsAllocatorTunedAndLeavesItEmptyForOlderRuns) {
+    const std::filesystem::path folder = freshFolder();
+    std::filesystem::create_directories(folder / "torus");
+    writeRun(folder / "torus" / "vdsm", R"("allocatorTuned": true, )");
+    writeRun(folder / "torus" / "sm", R"("allocatorTuned": false, )");
+    writeRun(folder / "torus" / "lispsm", "");
+    writeRun(folder / "torus" / "ssm", R"("allocatorTuned": "yes", )");
+
+    EXPECT_EQ(loadPeerRun(folder, "torus", "vdsm", {2, 1})->allocatorTuned, std::optional<bool>(true));
+    EXPECT_EQ(loadPeerRun(folder, "torus", "sm", {2, 1})->allocatorTuned, std::optional<bool>(false));
+    EXPECT_FALSE(loadPeerRun(folder, "torus", "lispsm", {2, 1})->allocatorTuned.has_value());
+    EXPECT_THROW(loadPeerRun(folder, "torus", "ssm", {2, 1}), engine::Error);
 }

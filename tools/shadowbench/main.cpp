@@ -422,6 +422,7 @@ int main(int argc, char** argv) {
                     results.push_back(bench.peerResult(*scene, *run, texels->second));
                     if (technique == "vdsm") {
                         cost.peerUnshadowedFrame = run->unshadowed;
+                        cost.peerAllocatorTuned = run->allocatorTuned;
                     }
                     const shadowbench::ShadowMetrics& m = results.back().metrics;
                     std::cout << scene->name() << " osg-" << technique << " (" << run->osgClass << ", "

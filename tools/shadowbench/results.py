@@ -22,9 +22,12 @@ from default_rule import EDGE_FLOOR, FLOOR, MEMORY_BUDGET_MIB, MIN_EDGE_PIXELS, 
 from default_rule import edges_scored, map_mib, meets_floor, recommend, scored  # noqa: E402
 import cost_model  # noqa: E402
 
+# The sections --only regenerates alone, by its option.
+PARTIAL_SECTIONS = {"real": "## Real models", "virtual": "## Virtual maps", "soft": "## Soft shadows", "cost": "## Cost model",
+                    "sizing": "## Maps sized to the view", "still": "## A still view keeps its maps"}
+
 work, results_md, plot_folder = (pathlib.Path(a) for a in sys.argv[1:4])
-if sys.argv[4:] not in ([], ["--only", "real"], ["--only", "virtual"], ["--only", "soft"], ["--only", "cost"],
-                         ["--only", "sizing"], ["--only", "still"]):
+if sys.argv[4:] != [] and not (len(sys.argv) == 6 and sys.argv[4] == "--only" and sys.argv[5] in PARTIAL_SECTIONS):
     sys.exit(f"results.py: unknown options {' '.join(sys.argv[4:])} (usage: see its docstring)")
 partial = sys.argv[5] if len(sys.argv) > 5 else None
 plot_folder.mkdir(parents=True, exist_ok=True)
@@ -897,10 +900,6 @@ def soft_section(soft, coarse, seams):
     out.append("\n".join(lines) + "\n")
 
 
-PARTIAL_SECTIONS = {"real": "## Real models", "virtual": "## Virtual maps", "soft": "## Soft shadows", "cost": "## Cost model",
-                    "sizing": "## Maps sized to the view", "still": "## A still view keeps its maps"}
-
-
 def sizing_section(sizing):
     """The default technique's directional map sized to the view at several targets, and at the full
     resolution, per scene."""
@@ -970,8 +969,7 @@ def still_section(still):
         if peer_unshadowed:
             tally["unshadowedPeers"] += 1
             tally["unshadowed"] += cost["unshadowedFrameMs"]["median"] <= peer_unshadowed
-            peer_json = work / "osg" / scene / "vdsm.json"
-            peer_allocators.add(json.loads(peer_json.read_text()).get("allocatorTuned") if peer_json.exists() else None)
+            peer_allocators.add(cost.get("peerAllocatorTuned"))
         moving, kept = frame_ms(r), r["stillFrameMs"]["median"]
         if not r["stillFrameKeptMaps"]:
             raise SystemExit(f"results.py: {scene}'s still frames drew their maps (stillFrameKeptMaps false)")

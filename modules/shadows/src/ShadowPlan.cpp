@@ -4,8 +4,6 @@
 
 namespace shadows {
 
-namespace {
-
 GLenum glDepthFormat(DepthFormat format) {
     switch (format) {
     case DepthFormat::D16:
@@ -17,6 +15,8 @@ GLenum glDepthFormat(DepthFormat format) {
     }
     return GL_DEPTH_COMPONENT24;
 }
+
+namespace {
 
 /// The technique's options that select shader code (after the plan's normal offset, whose bit follows it).
 void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {

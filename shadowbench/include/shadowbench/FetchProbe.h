@@ -2,6 +2,7 @@
 
 #include <engine/Module.h>
 #include <engine/gl/GlObject.h>
+#include <shadows/ShadowSettings.h>
 
 #include <glm/mat4x4.hpp>
 
@@ -11,11 +12,11 @@ namespace shadowbench {
 /// or a hardware comparison with 2x2 PCF (what `hw-pcf` and the PCF kernels read).
 enum class FetchKind { Filtered, Compare };
 
-/// @brief The depth map a probe reads: its side in texels and its internal format (GL_DEPTH_COMPONENT16, 24
-/// or 32F). Its bytes per texel and texels per pixel set how much memory one read per fragment moves.
+/// @brief The depth map a probe reads: its side in texels and its depth format. Its bytes per texel and
+/// texels per pixel set how much memory one read per fragment moves.
 struct ProbeMap {
     int size = 2048;
-    GLenum format = GL_DEPTH_COMPONENT24;
+    shadows::DepthFormat format = shadows::DepthFormat::D24;
 };
 
 /// @brief The cost model's reference: a lighting-pass module that makes exactly `fetches` reads of a depth
@@ -28,10 +29,10 @@ public:
     static constexpr int kCounts[] = {1, 2, 4, 8, 16};
     /// The maps besides the default's whose one comparison read the cost model measures (SceneCost::
     /// oneCompareReadByMap): smaller sides, and the other depth formats at 2048².
-    static constexpr ProbeMap kOtherMaps[] = {{512, GL_DEPTH_COMPONENT24},
-                                              {1024, GL_DEPTH_COMPONENT24},
-                                              {2048, GL_DEPTH_COMPONENT16},
-                                              {2048, GL_DEPTH_COMPONENT32F}};
+    static constexpr ProbeMap kOtherMaps[] = {{512, shadows::DepthFormat::D24},
+                                              {1024, shadows::DepthFormat::D24},
+                                              {2048, shadows::DepthFormat::D16},
+                                              {2048, shadows::DepthFormat::D32F}};
 
     /// @param worldToMap world -> map texture coordinates and depth (a light's orthographic fit).
     FetchProbe(FetchKind kind, int fetches, const glm::mat4& worldToMap, ProbeMap map = {});

@@ -25,6 +25,9 @@ struct PeerRun {
     int shadowMaps = 1;
     PassTiming shadowed;
     PassTiming unshadowed;
+    /// Whether the peer raised glibc's allocator thresholds as our context does (gs-osgshadow --allocator);
+    /// empty for runs that predate the field.
+    std::optional<bool> allocatorTuned;
     /// Visibility per pixel, rows top to bottom (our images' order), in [0,1], or -1 where the peer's
     /// unshadowed frame had no lit surface.
     std::vector<float> visibility;

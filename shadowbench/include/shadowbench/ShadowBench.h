@@ -132,6 +132,8 @@ struct SceneCost {
     /// The OpenSceneGraph peer's unshadowed frame (from its vdsm run), when it ran; negative medians
     /// otherwise.
     PassTiming peerUnshadowedFrame{-1.0, -1.0, -1.0};
+    /// Whether that run raised glibc's allocator thresholds as ours does (PeerRun::allocatorTuned).
+    std::optional<bool> peerAllocatorTuned;
     /// The cost model (BenchOptions::costModel; negative when not measured): the unshadowed lighting pass,
     /// and the lighting-pass milliseconds one more fetch per fragment adds (FetchProbe), bilinear and
     /// comparison.

@@ -11,6 +11,9 @@
 
 namespace shadows {
 
+/// @brief The GL internal format of a map in `format` (D24 for a value outside the enum).
+GLenum glDepthFormat(DepthFormat format);
+
 /// @brief What the passes do for one set of settings: the technique's row resolved against its options,
 /// once, in ShadowModule::setSettings; everything else reads it.
 struct ShadowPlan {

@@ -136,7 +136,6 @@ void main() {
         for (int x = 0; x < GS_SPAN; ++x) {
             int i = y * GS_SPAN + x;
             bool corner = (x == 0 || x == GS_SPAN - 1) && (y == 0 || y == GS_SPAN - 1); // no pixel reads these
-            gsPositions[i] = vec3(0.0);
             gsSurfaces[i] = !corner && gsSurfaceAt(origin + ivec2(x - 1, y - 1), gsPositions[i]);
         }
     }
