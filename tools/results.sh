@@ -57,17 +57,19 @@ real_models_steps() { # steps 4 to 6, the "Real models" section, which the full 
     "$bench" "${sweep[@]}" --techniques gsm --resolutions 2048 --frames 5 --peer "$work/osg" --out "$work/scaling"
 
     # 6. What the renderer's options do, side by side in one run (gs-render, whole frames): the depth pre-pass, glibc's
-    #    default allocator thresholds instead of the tuned ones, and meshes drawn whole instead of in chunks; the
+    #    default allocator thresholds instead of the tuned ones, meshes drawn whole instead of in chunks, and every
+    #    face drawn, the hidden faces of closed meshes too, in the lighting pass and the shadow pass; the
     #    defaults run twice, so the table shows how far two identical runs differ. Every frame draws its shadow maps
     #    (--redraw-maps), as a moving view's do, so the shadow pass's draws are among what the options change.
     for model in knob fzk-haus cylinder-engine suzanne terrain; do
         for technique in none gsm pcf-gsm-average; do
-            for variant in plain prepass default-allocator unchunked plain-again; do
+            for variant in plain prepass default-allocator unchunked every-face plain-again; do
                 case $variant in
                     plain | plain-again) options=() ;;
                     prepass) options=(--depth-prepass) ;;
                     default-allocator) options=(--allocator default) ;;
                     unchunked) options=(--chunk-triangles 16777216) ;;
+                    every-face) options=(--draw-hidden-faces --caster-faces both) ;;
                 esac
                 ./build/bin/gs-render --scene "$model" --technique "$technique" --size 640x480 --frames 15 --redraw-maps \
                     "${options[@]}" --out "$work/engine/$model/$technique-$variant" >/dev/null

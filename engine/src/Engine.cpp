@@ -101,9 +101,9 @@ GLuint Engine::reserveTextureUnit() {
     return nextTextureUnit_++;
 }
 
-void Engine::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
+void Engine::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, HiddenFaces hiddenFaces,
                         const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
-    renderer_.drawMeshes(scene, cullViewProjection, beforeDraw);
+    renderer_.drawMeshes(scene, cullViewProjection, hiddenFaces, beforeDraw);
 }
 
 void Engine::forEachMeshBounds(const Scene& scene,

@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <iostream>
+#include <optional>
 
 namespace engine {
 
@@ -187,9 +188,12 @@ void ForwardRenderer::forEachMeshBounds(
 }
 
 FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
+                                       HiddenFaces hiddenFaces,
                                        const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
     FrameStats stats;
     std::vector<const MeshChunk*> visible;
+    // The cull-face state set last (GL_NONE: disabled), once this pass has set it.
+    std::optional<GLenum> culled;
     scene.forEach([&](EntityId id, const Entity& entity) {
         if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->indices.empty()) {
             return;
@@ -209,6 +213,18 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
         }
         gpu.vertexArray.bind();
         for (const MeshChunk* chunk : visible) {
+            if (hiddenFaces == HiddenFaces::Skip) {
+                const GLenum face = hiddenFace(chunk->closure, chunk->closedBounds, clipFromModel);
+                if (culled != face) {
+                    if (face == GL_NONE) {
+                        glDisable(GL_CULL_FACE);
+                    } else {
+                        glEnable(GL_CULL_FACE);
+                        glCullFace(face);
+                    }
+                    culled = face;
+                }
+            }
             // The range tells the driver which vertices the draw reads: only the chunk's own.
             glDrawRangeElements(
                 GL_TRIANGLES, chunk->firstVertex, chunk->firstVertex + chunk->vertexCount - 1,
@@ -218,6 +234,9 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
             stats.triangles += chunk->indexCount / 3;
         }
     });
+    if (culled.value_or(GL_NONE) != GL_NONE) {
+        glDisable(GL_CULL_FACE);
+    }
     return stats;
 }
 
@@ -228,8 +247,8 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
                                                                             : 0;
     const ShaderVariantKey sceneBits =
         (sceneHasPositionalLights_ ? positionalLightsFlag_ : 0) | outputBits | lightCountBits_;
-    const FrameStats drawn =
-        drawMeshes(frame.scene, frame.viewProjection, [&](EntityId id, const glm::mat4& model) {
+    const FrameStats drawn = drawMeshes(
+        frame.scene, frame.viewProjection, lightingHiddenFaces, [&](EntityId id, const glm::mat4& model) {
             if (depthOnly) {
                 programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
                 return true;

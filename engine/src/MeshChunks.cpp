@@ -56,21 +56,38 @@ ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
         result.bounds.extend(p);
     }
     const auto triangleCount = static_cast<std::uint32_t>(mesh.triangleCount());
-    std::vector<std::uint32_t> order(triangleCount);
-    std::iota(order.begin(), order.end(), 0u);
-    std::vector<std::span<std::uint32_t>> leaves;
-    const std::uint32_t maxTriangles = std::max<std::uint32_t>(limits.maxTriangles, 1);
     if (triangleCount == 0) {
         return result;
     }
-    if (triangleCount <= maxTriangles) {
-        leaves.emplace_back(order);
-    } else {
-        std::vector<glm::vec3> centroids(triangleCount);
-        for (std::uint32_t t = 0; t < triangleCount; ++t) {
-            centroids[t] = finiteCentroid(mesh, t);
+    const SurfaceParts parts = surfaceParts(mesh);
+    const auto closureOf = [&](std::uint32_t triangle) {
+        return parts.parts[parts.triangleParts[triangle]].closure;
+    };
+    // Triangles grouped by closure, each group in its original order.
+    std::vector<std::uint32_t> order(triangleCount);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return closureOf(a) < closureOf(b); });
+    std::vector<std::span<std::uint32_t>> leaves;
+    const std::uint32_t maxTriangles = std::max<std::uint32_t>(limits.maxTriangles, 1);
+    std::vector<glm::vec3> centroids;
+    for (auto group = order.begin(); group != order.end();) {
+        const SurfaceClosure closure = closureOf(*group);
+        const auto end =
+            std::find_if(group, order.end(), [&](std::uint32_t t) { return closureOf(t) != closure; });
+        const std::span<std::uint32_t> triangles(group, end);
+        if (triangles.size() <= maxTriangles) {
+            leaves.push_back(triangles);
+        } else {
+            if (centroids.empty()) {
+                centroids.resize(triangleCount);
+                for (std::uint32_t t = 0; t < triangleCount; ++t) {
+                    centroids[t] = finiteCentroid(mesh, t);
+                }
+            }
+            partition(triangles, centroids, maxTriangles, leaves);
         }
-        partition(order, centroids, maxTriangles, leaves);
+        group = end;
     }
 
     // Each chunk numbers the vertices it uses in first-use order; `seenIn` says which chunk numbered a
@@ -84,7 +101,11 @@ ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
         chunk.firstIndex = static_cast<std::uint32_t>(result.indices.size());
         chunk.firstVertex = static_cast<std::uint32_t>(result.sourceVertex.size());
         const auto chunkNumber = static_cast<std::uint32_t>(result.chunks.size());
+        chunk.closure = closureOf(leaf.front());
         for (const std::uint32_t triangle : leaf) {
+            if (chunk.closure != SurfaceClosure::Open) {
+                chunk.closedBounds.extend(parts.parts[parts.triangleParts[triangle]].bounds);
+            }
             for (std::uint32_t corner = 0; corner < 3; ++corner) {
                 const std::uint32_t vertex = mesh.indices[3 * triangle + corner];
                 if (seenIn[vertex] != chunkNumber) {

@@ -1,5 +1,6 @@
 // splitIntoChunks: every triangle survives exactly once, chunks respect the limit, their bounds hold their
-// vertices, small meshes keep their order, and broken input neither crashes nor loses triangles.
+// vertices, small meshes keep their order, closed parts and open ones never share a chunk, and broken input
+// neither crashes nor loses triangles.
 #include <engine/MeshChunks.h>
 #include <engine/Primitives.h>
 
@@ -98,6 +99,43 @@ TEST(MeshChunksTest, NonFinitePositionsKeepEveryTriangle) {
     mesh.positions[7] = glm::vec3(std::numeric_limits<float>::infinity(), 0.0f, 0.0f);
     const engine::ChunkedMesh chunked = engine::splitIntoChunks(mesh, {7});
     EXPECT_EQ(sourceTriangles(chunked), meshTriangles(mesh));
+}
+
+TEST(MeshChunksTest, EachChunkHoldsOneClosureWithTheBoundsOfItsWholeParts) {
+    // An open plane, then a closed cube, then another plane: one mesh, as real assets merge them.
+    engine::MeshData mesh = engine::primitives::plane(4.0f, 2);
+    const engine::MeshData cube = engine::primitives::cube(1.0f);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const glm::vec3& p : cube.positions) {
+        mesh.positions.push_back(p + glm::vec3(0.0f, 2.0f, 0.0f));
+    }
+    for (const std::uint32_t index : cube.indices) {
+        mesh.indices.push_back(base + index);
+    }
+    const engine::MeshData plane = engine::primitives::plane(1.0f);
+    const auto planeBase = static_cast<std::uint32_t>(mesh.positions.size());
+    for (const glm::vec3& p : plane.positions) {
+        mesh.positions.push_back(p + glm::vec3(0.0f, -3.0f, 0.0f));
+    }
+    for (const std::uint32_t index : plane.indices) {
+        mesh.indices.push_back(planeBase + index);
+    }
+    mesh.normals.clear();
+
+    const engine::ChunkedMesh chunked = engine::splitIntoChunks(mesh, {5}); // the cube's 12 in three chunks
+    EXPECT_EQ(sourceTriangles(chunked), meshTriangles(mesh));
+    std::size_t closedTriangles = 0;
+    for (const engine::MeshChunk& chunk : chunked.chunks) {
+        if (chunk.closure == engine::SurfaceClosure::Outward) {
+            closedTriangles += chunk.indexCount / 3;
+            EXPECT_EQ(chunk.closedBounds.min, glm::vec3(-0.5f, 1.5f, -0.5f));
+            EXPECT_EQ(chunk.closedBounds.max, glm::vec3(0.5f, 2.5f, 0.5f));
+        } else {
+            EXPECT_EQ(chunk.closure, engine::SurfaceClosure::Open);
+            EXPECT_TRUE(chunk.closedBounds.empty());
+        }
+    }
+    EXPECT_EQ(closedTriangles, cube.triangleCount());
 }
 
 TEST(MeshChunksTest, ZeroLimitMeansOneTrianglePerChunk) {

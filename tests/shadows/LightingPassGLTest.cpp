@@ -1,12 +1,14 @@
 // The lighting pass's lean paths change no image: the early out of receivers facing away from the light, on
 // every map layout (one map, cascades, cube faces) and technique family, exactly; the orthographic lookups of
-// frames whose maps are all directional, and the vertex stage's projection, within float tolerance.
+// frames whose maps are all directional, the vertex stage's projection, and the faces of closed meshes left
+// out of the sample, caster and lighting passes, within float tolerance.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
 #include <engine/Image.h>
 #include <engine/RenderTarget.h>
+#include <engine/SurfaceClosure.h>
 #include <shadows/ShadowModule.h>
 
 #include <gtest/gtest.h>
@@ -222,7 +224,75 @@ TEST_P(VertexProjection, SameLookupsAsFragmentStage) {
     }
 }
 
+struct HiddenFacesCase {
+    std::string name;
+    std::string scene;
+    MapAllocation maps = MapAllocation::Fitted;
+    bool mirrored = false; // every mesh mirrored in x: its winding turns over
+};
+
+void PrintTo(const HiddenFacesCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+/// The frame with the hidden faces of closed meshes left out of every pass (the defaults), or drawn.
+engine::Image withHiddenFaces(const content::LoadedScene& loaded, ShadowSettings settings, bool leftOut) {
+    settings.casterFaces = leftOut ? CasterFaces::Auto : CasterFaces::Both;
+    engine::Engine engine;
+    engine.addModule(std::make_unique<ShadowModule>(settings));
+    engine.renderer().lightingHiddenFaces = leftOut ? engine::HiddenFaces::Skip : engine::HiddenFaces::Draw;
+    engine::RenderTarget target({160, 120});
+    engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    return target.readPixels();
+}
+
+class HiddenFaces : public ::testing::TestWithParam<HiddenFacesCase> {};
+
+// The depth each pass keeps is the nearest, which a closed mesh's faces turned away never are: the map's
+// depth under each pixel, and the frame, agree with every face drawn.
+TEST_P(HiddenFaces, LeftOutOfEveryPassChangeNoLookup) {
+    glTestContext();
+    const HiddenFacesCase& c = GetParam();
+    content::LoadedScene loaded = loadScene(c.scene);
+    bool closedPart = false;
+    std::vector<engine::EntityId> meshes;
+    loaded.scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+        if (!entity.mesh || !entity.mesh->mesh) {
+            return;
+        }
+        for (const auto& part : engine::surfaceParts(*entity.mesh->mesh).parts) {
+            closedPart = closedPart || part.closure != engine::SurfaceClosure::Open;
+        }
+        meshes.push_back(id);
+    });
+    for (const engine::EntityId id : meshes) {
+        loaded.scene.entity(id).transform.scale.x *= c.mirrored ? -1.0f : 1.0f;
+    }
+    ASSERT_TRUE(closedPart) << c.name << ": the scene has no closed mesh to leave faces out of";
+    for (const ShadowDebugView view : {ShadowDebugView::None, ShadowDebugView::ShadowMap}) {
+        ShadowSettings settings;
+        settings.resolution = 512;
+        settings.mapAllocation = c.maps;
+        settings.debugView = view;
+        const std::string what = c.name + " " + std::string(toString(view));
+        expectSameLookups(withHiddenFaces(loaded, settings, true), withHiddenFaces(loaded, settings, false),
+                          what);
+    }
+}
+
 const auto caseName = [](const auto& caseInfo) { return caseInfo.param.name; };
+
+// knob: a sun's map; spheres: a spot's; room: two point lights' cube faces; outdoor: cascades; and virtual
+// pages, and a mirrored scene, whose faces turned away wind the other way.
+INSTANTIATE_TEST_SUITE_P(
+    , HiddenFaces,
+    ::testing::Values(HiddenFacesCase{"knob", "knob"}, HiddenFacesCase{"spheres", "spheres"},
+                      HiddenFacesCase{"room", "room"}, HiddenFacesCase{"outdoor", "outdoor"},
+                      HiddenFacesCase{"knob_virtual", "knob", MapAllocation::Virtual},
+                      HiddenFacesCase{"room_virtual", "room", MapAllocation::Virtual},
+                      HiddenFacesCase{"knob_mirrored", "knob", MapAllocation::Fitted, true},
+                      HiddenFacesCase{"room_mirrored", "room", MapAllocation::Fitted, true}),
+    caseName);
 
 // knob: one directional map; outdoor: three cascades; spheres: a spot map; room: a sun's map beside two point
 // lights' cube faces (which the fragment stage projects), so the vertex stage's per-light outputs are indexed

@@ -38,6 +38,7 @@ struct Options {
     std::uint32_t chunkTriangles = engine::ChunkLimits{}.maxTriangles;
     bool culling = true;
     bool depthPrePass = false;
+    bool drawHiddenFaces = false;
     bool tuneAllocator = true;
 };
 
@@ -52,6 +53,7 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --chunk-triangles N  triangles per draw chunk, 1..16777216   [4096]
   --no-culling     draw chunks outside the view volume too
   --depth-prepass  lay down depth first, then shade with an EQUAL depth test
+  --draw-hidden-faces  draw the faces closed meshes hide from the camera too (left out by default)
   --redraw-maps    draw the shadow maps every frame, as a moving view does (else a still view keeps them)
   --allocator A    tuned (mallopt on CPU rasterisers) or default  [tuned]
   --list-techniques  print every shadow technique's name, one a line, and exit
@@ -175,6 +177,8 @@ Options parse(int argc, char** argv) {
             options.culling = false;
         } else if (arg == "--depth-prepass") {
             options.depthPrePass = true;
+        } else if (arg == "--draw-hidden-faces") {
+            options.drawHiddenFaces = true;
         } else if (arg == "--redraw-maps") {
             settings.reuseUnchangedMaps = false;
         } else if (arg == "--allocator") {
@@ -238,6 +242,8 @@ int main(int argc, char** argv) {
         engine.renderer().chunkLimits.maxTriangles = options.chunkTriangles;
         engine.renderer().culling = options.culling;
         engine.renderer().depthPrePass = options.depthPrePass;
+        engine.renderer().lightingHiddenFaces =
+            options.drawHiddenFaces ? engine::HiddenFaces::Draw : engine::HiddenFaces::Skip;
         const shadows::ShadowModule* shadowModule = nullptr;
         if (options.shadows) {
             shadowModule = &static_cast<const shadows::ShadowModule&>(
@@ -290,6 +296,7 @@ int main(int argc, char** argv) {
                << "  \"chunkTriangles\": " << options.chunkTriangles << ",\n"
                << "  \"culling\": " << (options.culling ? "true" : "false") << ",\n"
                << "  \"depthPrePass\": " << (options.depthPrePass ? "true" : "false") << ",\n"
+               << "  \"drawHiddenFaces\": " << (options.drawHiddenFaces ? "true" : "false") << ",\n"
                << "  \"allocatorTuned\": " << (context.allocatorTuned() ? "true" : "false") << ",\n"
                << "  \"programsCompiled\": " << engine.programs().compileCount() << ",\n"
                << "  \"shadowTechnique\": \""

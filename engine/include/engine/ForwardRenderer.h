@@ -63,7 +63,7 @@ public:
     /// @brief Draws the chunks of every mesh of `scene` that intersect the clip volume of
     /// `cullViewProjection` with the currently bound program (see ModuleHost::drawMeshes).
     /// @return Chunks drawn and culled, triangles drawn.
-    FrameStats drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
+    FrameStats drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, HiddenFaces hiddenFaces,
                           const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw);
 
     /// @brief Calls `visit(entity, model, localBounds)` for every entity with a non-empty mesh; the bounds of
@@ -97,6 +97,9 @@ public:
     /// runs once per visible pixel. Pays when overdraw is high and lighting costs more than a second
     /// geometry pass (docs/RESULTS.md). Default false.
     bool depthPrePass = false;
+    /// What the lighting pass does with the faces of closed parts that their other faces hide from the camera
+    /// (HiddenFaces). Default Skip: the same image at about half a closed mesh's triangles.
+    HiddenFaces lightingHiddenFaces = HiddenFaces::Skip;
 
 private:
     struct GpuMesh {

@@ -2,6 +2,7 @@
 
 #include <engine/Bounds.h>
 #include <engine/MeshData.h>
+#include <engine/SurfaceClosure.h>
 
 #include <cstdint>
 #include <vector>
@@ -24,6 +25,10 @@ struct MeshChunk {
     std::uint32_t vertexCount = 0;
     /// Bounds of the chunk's vertices in the mesh's local space.
     Aabb bounds;
+    /// The closure its triangles' parts share (a chunk holds one kind), and the bounds of those parts whole
+    /// (empty for Open): where a pass may leave out the faces hidden behind the others (hiddenFace).
+    SurfaceClosure closure = SurfaceClosure::Open;
+    Aabb closedBounds;
 };
 
 /// @brief A mesh reordered into spatially compact chunks.
@@ -38,9 +43,10 @@ struct ChunkedMesh {
     Aabb bounds;
 };
 
-/// @brief Splits `mesh` into chunks of at most `limits.maxTriangles` triangles by recursive median splits of
-/// the triangle centroids along the longest axis, so that each chunk's bounds are tight for culling.
-/// Triangles keep their original order inside a chunk; a mesh that fits one chunk keeps its triangle order
+/// @brief Splits `mesh` into chunks of at most `limits.maxTriangles` triangles: first by the closure of their
+/// parts (surfaceParts: open, then outward, then inward), then by recursive median splits of the triangle
+/// centroids along the longest axis, so that each chunk's bounds are tight for culling. Triangles keep their
+/// original order inside a chunk; a mesh of one closure that fits one chunk keeps its triangle order
 /// entirely. Indices out of range are the caller's to reject (the loaders do).
 [[nodiscard]] ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits = {});
 

@@ -202,7 +202,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
 }
 
 void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
-                              std::span<const MapSlot> slots) {
+                              std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) {
     for (std::size_t layer = 0; maps_ && layer < slots.size(); ++layer) {
         const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
         const LightProjection& projection = slots[layer].projection;
@@ -216,7 +216,7 @@ void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Prog
             glEnable(GL_SCISSOR_TEST);
             glScissor(drawn.x, drawn.y, drawn.z, drawn.w);
         }
-        drawCasters(host_, scene, program, projection);
+        drawCasters(host_, scene, program, projection, hiddenFaces);
         if (!whole) {
             glDisable(GL_SCISSOR_TEST);
         }

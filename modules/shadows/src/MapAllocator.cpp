@@ -56,14 +56,14 @@ glm::ivec4 drawnTexels(const LightProjection& projection, int side) {
 }
 
 void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
-                 const LightProjection& projection) {
+                 const LightProjection& projection, engine::HiddenFaces hiddenFaces) {
     const glm::mat4 viewProjection = projection.projection * projection.view;
     program.set("uLightViewProjection", viewProjection);
     program.set("uDepthRange", projection.depthRange);
     const glm::dvec2 low(projection.drawnRegion.x, projection.drawnRegion.y);
     const glm::dvec2 size =
         glm::max(glm::dvec2(projection.drawnRegion.z, projection.drawnRegion.w) - low, glm::dvec2(1e-6));
-    host.drawMeshes(scene, glm::mat4(textureRectClip(low, size)) * viewProjection,
+    host.drawMeshes(scene, glm::mat4(textureRectClip(low, size)) * viewProjection, hiddenFaces,
                     [&](engine::EntityId, const glm::mat4& model) {
                         program.set("uModel", model);
                         return true;

@@ -59,9 +59,10 @@ public:
     virtual void allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
                           std::vector<LightMapsBlock>& lights) = 0;
     /// @brief Draws this frame's maps, as the slots of the last allocate describe them, with `program` (the
-    /// shadow pass's, in use with its depth state and uniform block set).
+    /// shadow pass's, in use with its depth state and uniform block set), and the casters' hidden faces as
+    /// `hiddenFaces` says (drawCasters).
     virtual void render(const engine::Scene& scene, const engine::gl::Program& program,
-                        std::span<const MapSlot> slots) = 0;
+                        std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) = 0;
     /// @brief Blurs the moments drawn this frame with `blur` (shaders/shadows/blur.frag, in use, a fullscreen
     /// triangle bound), sampling through texture unit `unit`.
     virtual void blurMoments(const engine::gl::Program& blur, GLuint unit) = 0;
@@ -106,8 +107,9 @@ glm::ivec4 drawnTexels(const LightProjection& projection, int side);
 
 /// @brief Draws the casters of `scene` seen through `projection` with `program` (the shadow pass's, in use),
 /// culled to the clip volume of its drawnRegion: casters outside it could not write a texel read. Texels
-/// outside the region are the caller's to scissor.
+/// outside the region are the caller's to scissor. With HiddenFaces::Skip, the faces of closed parts turned
+/// away from the light are left out (the depth stored is the same; engine::hiddenFace).
 void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
-                 const LightProjection& projection);
+                 const LightProjection& projection, engine::HiddenFaces hiddenFaces);
 
 } // namespace shadows

@@ -56,8 +56,10 @@ std::span<const EnumName<MapAllocation>> enumNames() {
 
 template <>
 std::span<const EnumName<CasterFaces>> enumNames() {
-    static constexpr std::array<EnumName<CasterFaces>, 3> names{
-        {{CasterFaces::Both, "both"}, {CasterFaces::Front, "front"}, {CasterFaces::Back, "back"}}};
+    static constexpr std::array<EnumName<CasterFaces>, 4> names{{{CasterFaces::Auto, "auto"},
+                                                                 {CasterFaces::Both, "both"},
+                                                                 {CasterFaces::Front, "front"},
+                                                                 {CasterFaces::Back, "back"}}};
     return names;
 }
 

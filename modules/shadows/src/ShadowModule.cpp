@@ -303,7 +303,9 @@ void ShadowModule::drawMaps(const engine::FrameContext& frame) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    if (settings_.casterFaces != CasterFaces::Both) {
+    const bool cullsEveryMesh =
+        settings_.casterFaces == CasterFaces::Front || settings_.casterFaces == CasterFaces::Back;
+    if (cullsEveryMesh) {
         glEnable(GL_CULL_FACE);
         glCullFace(settings_.casterFaces == CasterFaces::Front ? GL_BACK : GL_FRONT);
     }
@@ -312,7 +314,9 @@ void ShadowModule::drawMaps(const engine::FrameContext& frame) {
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
     }
     glDisable(GL_FRAMEBUFFER_SRGB);
-    allocation_->render(frame.scene, program, slots_);
+    allocation_->render(frame.scene, program, slots_,
+                        settings_.casterFaces == CasterFaces::Auto ? engine::HiddenFaces::Skip
+                                                                   : engine::HiddenFaces::Draw);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     if (plan_.blursMoments) {

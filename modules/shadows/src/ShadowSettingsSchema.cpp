@@ -104,9 +104,10 @@ const std::vector<SettingRow>& rows() {
         {"depthFormat", "", "depth format", "Depth format of the shadow map.",
          choice<DepthFormat, &S::depthFormat>(), always, "--depth-format"},
         {"casterFaces", "", "caster faces",
-         "Faces (as seen from the light) drawn into the shadow map; both by default, since real models mix "
-         "windings and a culled face casts no shadow.",
-         choice<CasterFaces, &S::casterFaces>(), always},
+         "Faces (as seen from the light) drawn into the shadow map. auto: both of open meshes, since real "
+         "models mix windings and a culled face casts no shadow; of closed ones only those facing the light, "
+         "which store the same depth at about half the triangles.",
+         choice<CasterFaces, &S::casterFaces>(), always, "--caster-faces"},
         {"constantBiasTexels", "texels", "constant bias",
          "Receiver moved towards the light before the comparison, in shadow texel sizes at the receiver (so "
          "one value holds at any scene scale and map size), on top of the technique's own lift for relief. 0 "

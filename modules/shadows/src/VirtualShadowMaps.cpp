@@ -642,7 +642,7 @@ void VirtualShadowMaps::blurMoments(const engine::gl::Program& blur, GLuint unit
 }
 
 void VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
-                               std::span<const MapSlot>) {
+                               std::span<const MapSlot>, engine::HiddenFaces hiddenFaces) {
     if (toRender_.empty()) {
         return;
     }
@@ -667,7 +667,8 @@ void VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Pro
         drawCasters(host_, scene, program,
                     light.faceCount == 0 ? light.geometry.pageProjection(key.level, key.page, border_)
                                          : light.faces[static_cast<std::size_t>(key.face)].pageProjection(
-                                               key.level, key.page, border_));
+                                               key.level, key.page, border_),
+                    hiddenFaces);
     }
     glDisable(GL_SCISSOR_TEST);
 }

@@ -48,7 +48,7 @@ public:
                   std::vector<LightMapsBlock>& lights) override;
     /// @brief Draws this frame's new pages (the slots are the levels they crop), clearing each tile first.
     void render(const engine::Scene& scene, const engine::gl::Program& program,
-                std::span<const MapSlot> slots) override;
+                std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) override;
     /// @brief Blurs the moments of this frame's new pages, each within its tile, through a tile-sized
     /// temporary: the border holds the blur's reach (ShadowPlan::kernelReachTexels), so page edges blur as a
     /// whole map's interior would.

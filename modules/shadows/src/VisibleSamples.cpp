@@ -95,10 +95,13 @@ void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& 
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     program.set("uLightViewProjection", viewProjection);
-    host.drawMeshes(frame.scene, viewProjection, [&](engine::EntityId, const glm::mat4& model) {
-        program.set("uModel", model);
-        return true;
-    });
+    // The faces closed parts hide from the camera are left out, as the lighting pass leaves them: the same
+    // depth.
+    host.drawMeshes(frame.scene, viewProjection, engine::HiddenFaces::Skip,
+                    [&](engine::EntityId, const glm::mat4& model) {
+                        program.set("uModel", model);
+                        return true;
+                    });
     glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
     glViewport(0, 0, frame.target.size.x, frame.target.size.y);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

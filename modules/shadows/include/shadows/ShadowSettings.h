@@ -23,7 +23,10 @@ enum class DepthFormat { D16, D24, D32F };
 
 /// @brief Which faces (as seen from the light) are rendered into the shadow map.
 enum class CasterFaces {
-    Both,  ///< every triangle: right for meshes of any winding (real models often mix windings)
+    /// Both faces of open meshes, only the light-facing faces of closed ones, which store the same depth
+    /// (shadows::culledCasterFace): real models often mix windings or leave holes, and are then drawn whole.
+    Auto,
+    Both,  ///< every triangle: right for meshes of any winding
     Front, ///< triangles facing the light (counter-clockwise seen from it)
     Back,  ///< triangles facing away: the far side of closed meshes, which moves acne off lit surfaces
 };
@@ -99,7 +102,7 @@ struct ShadowSettings {
     /// Depth format of the shadow maps.
     DepthFormat depthFormat = DepthFormat::D24;
     /// Faces drawn into the shadow map.
-    CasterFaces casterFaces = CasterFaces::Both;
+    CasterFaces casterFaces = CasterFaces::Auto;
     /// Receiver moved towards the light before comparing, shadow texel sizes at the receiver.
     float constantBiasTexels = 0.0f;
     /// Comparison depth lowered by this many depth steps (depthBiasStep).
