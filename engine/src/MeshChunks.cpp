@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <span>
 
 namespace engine {
@@ -64,10 +63,16 @@ ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
         return parts.parts[parts.triangleParts[triangle]].closure;
     };
     // Triangles grouped by closure, each group in its original order.
-    std::vector<std::uint32_t> order(triangleCount);
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return closureOf(a) < closureOf(b); });
+    std::vector<std::uint32_t> order;
+    order.reserve(triangleCount);
+    for (const SurfaceClosure closure :
+         {SurfaceClosure::Open, SurfaceClosure::Outward, SurfaceClosure::Inward}) {
+        for (std::uint32_t t = 0; t < triangleCount; ++t) {
+            if (closureOf(t) == closure) {
+                order.push_back(t);
+            }
+        }
+    }
     std::vector<std::span<std::uint32_t>> leaves;
     const std::uint32_t maxTriangles = std::max<std::uint32_t>(limits.maxTriangles, 1);
     std::vector<glm::vec3> centroids;
