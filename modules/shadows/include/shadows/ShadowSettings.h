@@ -23,8 +23,8 @@ enum class DepthFormat { D16, D24, D32F };
 
 /// @brief Which faces (as seen from the light) are rendered into the shadow map.
 enum class CasterFaces {
-    /// Both faces of open meshes, only the light-facing faces of closed ones, which store the same depth
-    /// (shadows::culledCasterFace): real models often mix windings or leave holes, and are then drawn whole.
+    /// Only the light-facing faces of a mesh's closed parts, which store the same depth (engine::hiddenFace),
+    /// and both faces of the others: real models often mix windings or leave holes, and are then drawn whole.
     Auto,
     Both,  ///< every triangle: right for meshes of any winding
     Front, ///< triangles facing the light (counter-clockwise seen from it)
