@@ -93,8 +93,8 @@ SurfaceParts surfaceParts(const MeshData& mesh) {
     // Parts: points joined by the triangles' edges.
     std::vector<std::uint32_t> parent(points.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    // Every undirected edge's uses, filed under its lower point (a counting sort): the higher point, and +1
-    // for a use from the lower point to the higher, -1 the other way.
+    // Every undirected edge's uses, filed under its lower point (a counting sort): the higher point and which
+    // way the use runs.
     std::vector<std::uint32_t> firstUse(points.size() + 1, 0);
     for (std::size_t t = 0; t < triangleCount; ++t) {
         if (!degenerate[t]) {
