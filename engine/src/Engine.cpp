@@ -101,9 +101,10 @@ GLuint Engine::reserveTextureUnit() {
     return nextTextureUnit_++;
 }
 
-void Engine::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, HiddenFaces hiddenFaces,
-                        const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
-    renderer_.drawMeshes(scene, cullViewProjection, hiddenFaces, beforeDraw);
+DrawnMeshes Engine::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, const MeshPass& pass,
+                               const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
+    const FrameStats drawn = renderer_.drawMeshes(scene, cullViewProjection, pass, beforeDraw);
+    return {drawn.drawCalls, drawn.triangles, drawn.culledChunks, drawn.shadowlessChunks};
 }
 
 void Engine::forEachMeshBounds(const Scene& scene,

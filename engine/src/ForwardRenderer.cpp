@@ -1,9 +1,12 @@
 #include <engine/Error.h>
 #include <engine/ForwardRenderer.h>
+#include <engine/ShadowlessChunks.h>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -187,10 +190,33 @@ void ForwardRenderer::forEachMeshBounds(
     });
 }
 
+std::vector<const MeshChunk*> ForwardRenderer::shadowlessChunks(const Scene& scene, const glm::vec4& light) {
+    std::vector<PlacedChunks> meshes;
+    bool anyFlat = false;
+    scene.forEach([&](EntityId id, const Entity& entity) {
+        if (!entity.mesh || !entity.mesh->mesh || entity.mesh->mesh->indices.empty()) {
+            return;
+        }
+        CachedMesh& entry = cached(entity.mesh->mesh);
+        const GpuMesh& gpu = upload(entry, *entity.mesh->mesh);
+        anyFlat = anyFlat || std::any_of(gpu.chunks.begin(), gpu.chunks.end(),
+                                         [](const MeshChunk& chunk) { return chunk.plane.has_value(); });
+        meshes.push_back({scene.worldMatrix(id), entry.bounds, gpu.chunks});
+    });
+    if (!anyFlat) {
+        return {};
+    }
+    std::vector<const MeshChunk*> shadowless = chunksCastingNoShadow(meshes, light);
+    std::sort(shadowless.begin(), shadowless.end(), std::less<>{});
+    return shadowless;
+}
+
 FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection,
-                                       HiddenFaces hiddenFaces,
+                                       const MeshPass& pass,
                                        const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
     FrameStats stats;
+    const std::vector<const MeshChunk*> shadowless =
+        pass.castersFor && leaveOutShadowlessChunks ? shadowlessChunks(scene, *pass.castersFor) : std::vector<const MeshChunk*>{};
     std::vector<const MeshChunk*> visible;
     // The cull-face state set last (GL_NONE: disabled), once this pass has set it.
     std::optional<GLenum> culled;
@@ -203,17 +229,20 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
         const glm::mat4 clipFromModel = cullViewProjection * model;
         visible.clear();
         for (const MeshChunk& chunk : gpu.chunks) {
-            if (!culling || intersectsClipVolume(chunk.bounds, clipFromModel)) {
+            if (std::binary_search(shadowless.begin(), shadowless.end(), &chunk, std::less<>{})) {
+                ++stats.shadowlessChunks;
+            } else if (!culling || intersectsClipVolume(chunk.bounds, clipFromModel)) {
                 visible.push_back(&chunk);
+            } else {
+                ++stats.culledChunks;
             }
         }
-        stats.culledChunks += gpu.chunks.size() - visible.size();
         if (visible.empty() || !beforeDraw(id, model)) {
             return;
         }
         gpu.vertexArray.bind();
         for (const MeshChunk* chunk : visible) {
-            if (hiddenFaces == HiddenFaces::Skip) {
+            if (pass.hiddenFaces == HiddenFaces::Skip) {
                 const GLenum face = hiddenFace(chunk->closure, chunk->closedBounds, clipFromModel);
                 if (culled != face) {
                     if (face == GL_NONE) {
@@ -247,33 +276,34 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
                                                                             : 0;
     const ShaderVariantKey sceneBits =
         (sceneHasPositionalLights_ ? positionalLightsFlag_ : 0) | outputBits | lightCountBits_;
-    const FrameStats drawn = drawMeshes(
-        frame.scene, frame.viewProjection, lightingHiddenFaces, [&](EntityId id, const glm::mat4& model) {
-            if (depthOnly) {
-                programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
-                return true;
-            }
-            const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
-            const DrawContext draw{frame, id, mesh, model};
-            ShaderVariantKey key = sceneBits;
-            if (mesh.normals.size() != mesh.positions.size()) {
-                key |= flatNormalsFlag_;
-            }
-            for (const Module* module : modules) {
-                key |= module->variantBits(draw);
-            }
-            const gl::Program& program = programs_.get(kForwardProgram, key);
-            program.use();
-            program.set("uModel", model);
-            program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
-            program.set("uBaseColor", mesh.material.baseColor);
-            program.set("uSpecularColor", mesh.material.specularColor);
-            program.set("uShininess", mesh.material.shininess);
-            for (Module* module : modules) {
-                module->bindLightingResources(program, draw);
-            }
-            return true;
-        });
+    const FrameStats drawn =
+        drawMeshes(frame.scene, frame.viewProjection, MeshPass{lightingHiddenFaces, std::nullopt},
+                   [&](EntityId id, const glm::mat4& model) {
+                       if (depthOnly) {
+                           programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
+                           return true;
+                       }
+                       const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
+                       const DrawContext draw{frame, id, mesh, model};
+                       ShaderVariantKey key = sceneBits;
+                       if (mesh.normals.size() != mesh.positions.size()) {
+                           key |= flatNormalsFlag_;
+                       }
+                       for (const Module* module : modules) {
+                           key |= module->variantBits(draw);
+                       }
+                       const gl::Program& program = programs_.get(kForwardProgram, key);
+                       program.use();
+                       program.set("uModel", model);
+                       program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
+                       program.set("uBaseColor", mesh.material.baseColor);
+                       program.set("uSpecularColor", mesh.material.specularColor);
+                       program.set("uShininess", mesh.material.shininess);
+                       for (Module* module : modules) {
+                           module->bindLightingResources(program, draw);
+                       }
+                       return true;
+                   });
     if (!depthOnly) {
         stats.drawCalls += drawn.drawCalls;
         stats.triangles += drawn.triangles;

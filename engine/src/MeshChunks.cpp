@@ -1,8 +1,11 @@
 #include <engine/MeshChunks.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <numeric>
 #include <span>
 
 namespace engine {
@@ -47,6 +50,100 @@ void partition(std::span<std::uint32_t> triangles, const std::vector<glm::vec3>&
     partition(triangles.subspan(middle), centroids, maxTriangles, leaves);
 }
 
+/// How far from a plane a point of a flat surface may lie: float rounding of coordinates around `box`, with
+/// room for a model's transform (a relative 1e-5 of its size, far below a shadow map's depth step over it).
+double flatnessTolerance(const Aabb& box) {
+    const glm::dvec3 low(box.min);
+    const glm::dvec3 high(box.max);
+    const double reach = glm::max(glm::length(low), glm::length(high));
+    return 1e-5 * glm::length(high - low) + 1e-6 * reach;
+}
+
+/// The plane of the triangle among `triangles` with the largest area, if all their corners lie on it within
+/// flatnessTolerance(`box`); none for triangles of no area.
+template <typename Triangles>
+std::optional<glm::vec4> commonPlane(const MeshData& mesh, const Triangles& triangles, const Aabb& box) {
+    const auto corner = [&](std::uint32_t triangle, std::uint32_t k) {
+        return glm::dvec3(mesh.positions[mesh.indices[3 * triangle + k]]);
+    };
+    glm::dvec3 normal(0.0);
+    glm::dvec3 origin(0.0);
+    double largest = 0.0;
+    for (const std::uint32_t t : triangles) {
+        const glm::dvec3 cross = glm::cross(corner(t, 1) - corner(t, 0), corner(t, 2) - corner(t, 0));
+        const double area = glm::length(cross);
+        if (area > largest) {
+            largest = area;
+            normal = cross / area;
+            origin = corner(t, 0);
+        }
+    }
+    if (!(largest > 0.0)) {
+        return std::nullopt;
+    }
+    const double tolerance = flatnessTolerance(box);
+    for (const std::uint32_t t : triangles) {
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            if (!(std::abs(glm::dot(normal, corner(t, k) - origin)) <= tolerance)) {
+                return std::nullopt;
+            }
+        }
+    }
+    return glm::vec4(glm::vec3(normal), static_cast<float>(-glm::dot(normal, origin)));
+}
+
+/// The group each part is chunked in, a chunk holding triangles of one: open parts (0), then flat open parts
+/// by their plane (1 to planes), then outward parts (planes + 1) and inward ones (planes + 2).
+struct PartGroups {
+    std::vector<std::uint32_t> groupOfPart;
+    std::uint32_t planes = 0;
+};
+
+PartGroups partGroups(const MeshData& mesh, const SurfaceParts& parts) {
+    std::vector<std::vector<std::uint32_t>> triangles(parts.parts.size());
+    for (std::uint32_t t = 0; t < parts.triangleParts.size(); ++t) {
+        triangles[parts.triangleParts[t]].push_back(t);
+    }
+    Aabb meshBounds;
+    for (const SurfaceParts::Part& part : parts.parts) {
+        meshBounds.extend(part.bounds);
+    }
+    // Planes are keyed by their coordinates rounded to steps well above the flatness tolerance; a plane on
+    // a step's edge may land in two groups, which costs a chunk, not a plane.
+    const double offsetStep =
+        1e-4 * static_cast<double>(glm::length(meshBounds.max - meshBounds.min)) + 1e-30;
+    std::map<std::array<std::int64_t, 4>, std::uint32_t> planeGroups;
+    PartGroups groups;
+    groups.groupOfPart.assign(parts.parts.size(), 0);
+    std::vector<SurfaceClosure> closures(parts.parts.size());
+    for (std::size_t p = 0; p < parts.parts.size(); ++p) {
+        closures[p] = parts.parts[p].closure;
+        if (closures[p] != SurfaceClosure::Open) {
+            continue;
+        }
+        const std::optional<glm::vec4> plane = commonPlane(mesh, triangles[p], parts.parts[p].bounds);
+        if (!plane) {
+            continue;
+        }
+        // One orientation per plane: its first non-zero normal coordinate positive.
+        const glm::vec3 normal(*plane);
+        const float sign = normal.x != 0.0f ? normal.x : normal.y != 0.0f ? normal.y : normal.z;
+        const glm::vec4 oriented = sign < 0.0f ? -*plane : *plane;
+        const std::array<std::int64_t, 4> key{std::llround(oriented.x * 1e3), std::llround(oriented.y * 1e3),
+                                              std::llround(oriented.z * 1e3),
+                                              std::llround(static_cast<double>(oriented.w) / offsetStep)};
+        const auto [found, added] = planeGroups.try_emplace(key, groups.planes + 1);
+        groups.planes += added ? 1 : 0;
+        groups.groupOfPart[p] = found->second;
+    }
+    for (std::size_t p = 0; p < parts.parts.size(); ++p) {
+        if (closures[p] != SurfaceClosure::Open) {
+            groups.groupOfPart[p] = groups.planes + (closures[p] == SurfaceClosure::Outward ? 1 : 2);
+        }
+    }
+    return groups;
+}
+
 } // namespace
 
 ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
@@ -59,27 +156,26 @@ ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
         return result;
     }
     const SurfaceParts parts = surfaceParts(mesh);
+    const PartGroups groups = partGroups(mesh, parts);
     const auto closureOf = [&](std::uint32_t triangle) {
         return parts.parts[parts.triangleParts[triangle]].closure;
     };
-    // Triangles grouped by closure, each group in its original order.
-    std::vector<std::uint32_t> order;
-    order.reserve(triangleCount);
-    for (const SurfaceClosure closure :
-         {SurfaceClosure::Open, SurfaceClosure::Outward, SurfaceClosure::Inward}) {
-        for (std::uint32_t t = 0; t < triangleCount; ++t) {
-            if (closureOf(t) == closure) {
-                order.push_back(t);
-            }
-        }
-    }
+    const auto groupOf = [&](std::uint32_t triangle) {
+        return groups.groupOfPart[parts.triangleParts[triangle]];
+    };
+    const auto flatGroup = [&](std::uint32_t group) { return group >= 1 && group <= groups.planes; };
+    // Triangles grouped, each group in its original order.
+    std::vector<std::uint32_t> order(triangleCount);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return groupOf(a) < groupOf(b); });
     std::vector<std::span<std::uint32_t>> leaves;
     const std::uint32_t maxTriangles = std::max<std::uint32_t>(limits.maxTriangles, 1);
     std::vector<glm::vec3> centroids;
     for (auto group = order.begin(); group != order.end();) {
-        const SurfaceClosure closure = closureOf(*group);
+        const std::uint32_t kind = groupOf(*group);
         const auto end =
-            std::find_if(group, order.end(), [&](std::uint32_t t) { return closureOf(t) != closure; });
+            std::find_if(group, order.end(), [&](std::uint32_t t) { return groupOf(t) != kind; });
         const std::span<std::uint32_t> triangles(group, end);
         if (triangles.size() <= maxTriangles) {
             leaves.push_back(triangles);
@@ -121,6 +217,10 @@ ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits) {
                 }
                 result.indices.push_back(chunkedIndex[vertex]);
             }
+        }
+        if (flatGroup(groupOf(leaf.front()))) {
+            chunk.plane =
+                commonPlane(mesh, leaf, chunk.bounds); // none where rounding put two planes together
         }
         chunk.indexCount = static_cast<std::uint32_t>(result.indices.size()) - chunk.firstIndex;
         chunk.vertexCount = static_cast<std::uint32_t>(result.sourceVertex.size()) - chunk.firstVertex;

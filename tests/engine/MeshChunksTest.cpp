@@ -1,15 +1,21 @@
 // splitIntoChunks: every triangle survives exactly once, chunks respect the limit, their bounds hold their
-// vertices, small meshes keep their order, closed parts and open ones never share a chunk, and broken input
-// neither crashes nor loses triangles.
+// vertices, small meshes keep their order, closed parts and open ones never share a chunk, flat parts are
+// chunked plane by plane and their chunks hold that plane, and broken input neither crashes nor loses
+// triangles.
 #include <engine/MeshChunks.h>
 #include <engine/Primitives.h>
+
+#include "../support/TestMeshes.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 namespace {
 
@@ -103,23 +109,9 @@ TEST(MeshChunksTest, NonFinitePositionsKeepEveryTriangle) {
 
 TEST(MeshChunksTest, EachChunkHoldsOneClosureWithTheBoundsOfItsWholeParts) {
     // An open plane, then a closed cube, then another plane: one mesh, as real assets merge them.
-    engine::MeshData mesh = engine::primitives::plane(4.0f, 2);
     const engine::MeshData cube = engine::primitives::cube(1.0f);
-    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const glm::vec3& p : cube.positions) {
-        mesh.positions.push_back(p + glm::vec3(0.0f, 2.0f, 0.0f));
-    }
-    for (const std::uint32_t index : cube.indices) {
-        mesh.indices.push_back(base + index);
-    }
-    const engine::MeshData plane = engine::primitives::plane(1.0f);
-    const auto planeBase = static_cast<std::uint32_t>(mesh.positions.size());
-    for (const glm::vec3& p : plane.positions) {
-        mesh.positions.push_back(p + glm::vec3(0.0f, -3.0f, 0.0f));
-    }
-    for (const std::uint32_t index : plane.indices) {
-        mesh.indices.push_back(planeBase + index);
-    }
+    engine::MeshData mesh = testsupport::merged(engine::primitives::plane(4.0f, 2), cube, glm::vec3(0, 2, 0));
+    mesh = testsupport::merged(mesh, engine::primitives::plane(1.0f), glm::vec3(0, -3, 0));
     mesh.normals.clear();
 
     const engine::ChunkedMesh chunked = engine::splitIntoChunks(mesh, {5}); // the cube's 12 in three chunks
@@ -136,6 +128,71 @@ TEST(MeshChunksTest, EachChunkHoldsOneClosureWithTheBoundsOfItsWholeParts) {
         }
     }
     EXPECT_EQ(closedTriangles, cube.triangleCount());
+}
+
+TEST(MeshChunksTest, FlatChunksHoldTheirPlaneAndFlatPartsChunkApart) {
+    // A ground tessellated into several chunks, a cube, a bent open strip and a tilted square in one mesh.
+    const glm::mat4 tilt =
+        glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(5, 1, 0)), 0.5f, glm::vec3(1, 0, 0));
+    engine::MeshData strip = engine::primitives::plane(1.0f, 2);
+    for (glm::vec3& p : strip.positions) {
+        p.y = p.x > 0.0f ? p.x : 0.0f; // folded along x = 0
+    }
+    engine::MeshData mesh = engine::primitives::plane(8.0f, 8);
+    mesh = testsupport::merged(mesh, engine::primitives::cube(1.0f), glm::vec3(0, 0.5f, 0));
+    mesh = testsupport::merged(mesh, strip, glm::vec3(-3, 2, 0)); // above the ground, welded to nothing
+    mesh = testsupport::merged(mesh, engine::primitives::plane(1.0f), tilt);
+
+    const engine::ChunkedMesh chunked = engine::splitIntoChunks(mesh, {32});
+    EXPECT_EQ(sourceTriangles(chunked), meshTriangles(mesh));
+    const glm::vec3 tiltedNormal = glm::normalize(glm::vec3(tilt * glm::vec4(0, 1, 0, 0)));
+    std::size_t groundTriangles = 0;
+    std::size_t tiltedTriangles = 0;
+    for (const engine::MeshChunk& chunk : chunked.chunks) {
+        if (!chunk.plane) {
+            continue;
+        }
+        const glm::vec3 normal(*chunk.plane);
+        EXPECT_NEAR(glm::length(normal), 1.0f, 1e-6f);
+        for (std::uint32_t v = chunk.firstVertex; v < chunk.firstVertex + chunk.vertexCount; ++v) {
+            EXPECT_NEAR(glm::dot(normal, mesh.positions[chunked.sourceVertex[v]]) + chunk.plane->w, 0.0f,
+                        1e-5f);
+        }
+        if (std::abs(glm::dot(normal, glm::vec3(0, 1, 0))) > 0.9999f) {
+            groundTriangles += chunk.indexCount / 3;
+        } else if (std::abs(glm::dot(normal, tiltedNormal)) > 0.9999f) {
+            tiltedTriangles += chunk.indexCount / 3;
+        }
+    }
+    // Every triangle of the ground and of the tilted square is in a flat chunk of its own plane; the cube's
+    // and the strip's are in none (the strip's two flat halves are one part, which is not flat).
+    EXPECT_EQ(groundTriangles, 128u);
+    EXPECT_EQ(tiltedTriangles, 2u);
+    std::size_t unplanarOpenTriangles = 0;
+    for (const engine::MeshChunk& chunk : chunked.chunks) {
+        if (!chunk.plane && chunk.closure == engine::SurfaceClosure::Open) {
+            unplanarOpenTriangles += chunk.indexCount / 3;
+        }
+    }
+    EXPECT_EQ(unplanarOpenTriangles, strip.triangleCount());
+}
+
+TEST(MeshChunksTest, FlatPartsOnOnePlaneShareChunksAndOthersDoNot) {
+    // Two squares on y = 0 apart (two parts), and one on a plane 0.1 rad off it, between them.
+    engine::MeshData mesh = testsupport::merged(engine::primitives::plane(1.0f),
+                                                engine::primitives::plane(1.0f), glm::vec3(6, 0, 0));
+    mesh = testsupport::merged(
+        mesh, engine::primitives::plane(1.0f),
+        glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(3, 0, 0)), 0.1f, glm::vec3(0, 0, 1)));
+    const engine::ChunkedMesh chunked = engine::splitIntoChunks(mesh);
+    ASSERT_EQ(chunked.chunks.size(), 2u);
+    EXPECT_EQ(chunked.chunks[0].indexCount, 12u); // the two on y = 0, in their order
+    EXPECT_EQ(chunked.chunks[1].indexCount, 6u);
+    for (const engine::MeshChunk& chunk : chunked.chunks) {
+        ASSERT_TRUE(chunk.plane.has_value());
+    }
+    EXPECT_NEAR(std::abs(chunked.chunks[0].plane->y), 1.0f, 1e-6f);
+    EXPECT_NEAR(std::abs(chunked.chunks[1].plane->y), std::cos(0.1f), 1e-6f);
 }
 
 TEST(MeshChunksTest, ZeroLimitMeansOneTrianglePerChunk) {

@@ -3,6 +3,8 @@
 #include <engine/Primitives.h>
 #include <engine/SurfaceClosure.h>
 
+#include "../support/TestMeshes.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,19 +16,7 @@ namespace {
 
 using engine::MeshData;
 using engine::SurfaceClosure;
-
-/// `b`'s triangles appended to `a`'s, moved by `offset`.
-MeshData merged(MeshData a, const MeshData& b, const glm::vec3& offset) {
-    const auto base = static_cast<std::uint32_t>(a.positions.size());
-    for (const glm::vec3& p : b.positions) {
-        a.positions.push_back(p + offset);
-    }
-    a.normals.insert(a.normals.end(), b.normals.begin(), b.normals.end());
-    for (const std::uint32_t index : b.indices) {
-        a.indices.push_back(base + index);
-    }
-    return a;
-}
+using testsupport::merged;
 
 MeshData reversed(MeshData mesh) {
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {

@@ -1,7 +1,8 @@
 // The lighting pass's lean paths change no image: the early out of receivers facing away from the light, on
 // every map layout (one map, cascades, cube faces) and technique family, exactly; the orthographic lookups of
 // frames whose maps are all directional, the vertex stage's projection, and the faces of closed meshes left
-// out of the sample, caster and lighting passes, within float tolerance.
+// out of the sample, caster and lighting passes, within float tolerance. Flat casters that shadow nothing,
+// left out of the caster pass of techniques that only compare, only ever take away a false shadow.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>
@@ -241,6 +242,8 @@ engine::Image withHiddenFaces(const content::LoadedScene& loaded, ShadowSettings
     engine::Engine engine;
     engine.addModule(std::make_unique<ShadowModule>(settings));
     engine.renderer().lightingHiddenFaces = leftOut ? engine::HiddenFaces::Skip : engine::HiddenFaces::Draw;
+    engine.renderer().leaveOutShadowlessChunks =
+        false; // changes the map's depth under a ground: ShadowlessPlanes
     engine::RenderTarget target({160, 120});
     engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
     return target.readPixels();
@@ -292,6 +295,105 @@ INSTANTIATE_TEST_SUITE_P(
                       HiddenFacesCase{"room_virtual", "room", MapAllocation::Virtual},
                       HiddenFacesCase{"knob_mirrored", "knob", MapAllocation::Fitted, true},
                       HiddenFacesCase{"room_mirrored", "room", MapAllocation::Fitted, true}),
+    caseName);
+
+struct ShadowlessPlanesCase {
+    std::string name;
+    std::string scene;
+    ShadowTechnique technique;
+    MapAllocation maps = MapAllocation::Fitted;
+    int cascadeCount = 0;
+    bool leavesOut = true; // the technique leaves such planes out
+};
+
+void PrintTo(const ShadowlessPlanesCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+struct CasterPass {
+    engine::Image image;
+    engine::DrawnMeshes casters;
+};
+
+/// The frame with flat casters that shadow nothing left out of the maps (the default), or drawn.
+CasterPass withShadowlessPlanes(const content::LoadedScene& loaded, const ShadowSettings& settings,
+                                bool leftOut) {
+    engine::Engine engine;
+    const auto& shadows =
+        static_cast<const ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    engine.renderer().leaveOutShadowlessChunks = leftOut;
+    engine::RenderTarget target({160, 120});
+    engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    return {target.readPixels(), shadows.stats().casters};
+}
+
+class ShadowlessPlanes : public ::testing::TestWithParam<ShadowlessPlanesCase> {};
+
+// Nothing lies behind such a plane as the light sees it, so a comparison that read it as nearer than the
+// receiver was a false shadow (a kernel reaching across the receiver's own plane, a corner between walls):
+// left out, a pixel only brightens, and few do. Techniques that read depth values keep the planes.
+TEST_P(ShadowlessPlanes, LeftOutOfTheCasterPassOnlyTakeFalseShadowsAway) {
+    glTestContext();
+    const ShadowlessPlanesCase& c = GetParam();
+    const content::LoadedScene loaded = loadScene(c.scene);
+    ShadowSettings settings;
+    settings.technique = c.technique;
+    settings.resolution = 512;
+    settings.mapAllocation = c.maps;
+    settings.cascadeCount = c.cascadeCount;
+    const CasterPass leftOut = withShadowlessPlanes(loaded, settings, true);
+    const CasterPass drawn = withShadowlessPlanes(loaded, settings, false);
+    EXPECT_EQ(drawn.casters.shadowlessChunks, 0u) << c.name;
+    if (!c.leavesOut) {
+        EXPECT_EQ(leftOut.casters.shadowlessChunks, 0u) << c.name;
+        expectSameImage(leftOut.image, drawn.image, c.name);
+        return;
+    }
+    EXPECT_GT(leftOut.casters.shadowlessChunks, 0u) << c.name;
+    EXPECT_LT(leftOut.casters.triangles, drawn.casters.triangles) << c.name;
+    std::size_t darker = 0;
+    std::size_t brighter = 0;
+    const std::size_t pixels = leftOut.image.pixels.size() / 4;
+    for (std::size_t pixel = 0; pixel < pixels; ++pixel) {
+        int least = 0;
+        int most = 0;
+        for (std::size_t channel = 0; channel < 3; ++channel) {
+            const std::size_t i = 4 * pixel + channel;
+            const int change = int(leftOut.image.pixels[i]) - int(drawn.image.pixels[i]);
+            least = std::min(least, change);
+            most = std::max(most, change);
+        }
+        darker += least < -1 ? 1 : 0; // a unit of rounding either way
+        brighter += most > 1 ? 1 : 0;
+    }
+    EXPECT_EQ(darker, 0u) << c.name;
+    // A shadow a real caster casts, taken away, would brighten far more.
+    EXPECT_LE(brighter, pixels / 100) << c.name;
+    expectLitAndShadowed(leftOut.image, c.name);
+}
+
+// knob: a sun over a ground, fitted, cascaded and on virtual pages; spheres: a spot over a ground; room:
+// walls, floor and ceiling around two point lights. Techniques that read depths themselves keep every caster,
+// as do the naive reproductions.
+INSTANTIATE_TEST_SUITE_P(
+    , ShadowlessPlanes,
+    ::testing::Values(
+        ShadowlessPlanesCase{"knob_slope_scaled", "knob", ShadowTechnique::SlopeScaledBias},
+        ShadowlessPlanesCase{"knob_pcf", "knob", ShadowTechnique::Pcf},
+        ShadowlessPlanesCase{"knob_cascades_hw_pcf", "knob", ShadowTechnique::HardwarePcf,
+                             MapAllocation::Fitted, 3},
+        ShadowlessPlanesCase{"knob_virtual_slope_scaled", "knob", ShadowTechnique::SlopeScaledBias,
+                             MapAllocation::Virtual},
+        ShadowlessPlanesCase{"spheres_pcf_adaptive_bias", "spheres", ShadowTechnique::PcfAdaptiveBias},
+        ShadowlessPlanesCase{"room_pcf", "room", ShadowTechnique::Pcf},
+        ShadowlessPlanesCase{"room_normal_offset", "room", ShadowTechnique::NormalOffset},
+        ShadowlessPlanesCase{"room_virtual_pcf_jittered", "room", ShadowTechnique::JitteredPcf,
+                             MapAllocation::Virtual},
+        ShadowlessPlanesCase{"knob_gsm_keeps", "knob", ShadowTechnique::Gsm, MapAllocation::Fitted, 0, false},
+        ShadowlessPlanesCase{"room_evsm_keeps", "room", ShadowTechnique::Evsm, MapAllocation::Fitted, 0,
+                             false},
+        ShadowlessPlanesCase{"knob_hard_keeps", "knob", ShadowTechnique::HardCompare, MapAllocation::Fitted,
+                             0, false}),
     caseName);
 
 // knob: one directional map; outdoor: three cascades; spheres: a spot map; room: a sun's map beside two point

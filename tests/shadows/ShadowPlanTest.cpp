@@ -178,3 +178,27 @@ TEST(ShadowPlanTest, TheFootprintNormalOffsetCanBeTurnedOffLeavingOnlyTheMargin)
     EXPECT_EQ(plan.normalOffsetTexels, 0.5f);
     EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_NORMAL_OFFSET"));
 }
+
+TEST(ShadowPlanTest, OnlyTechniquesThatCompareLeaveOutPlanesThatShadowNothing) {
+    // A texel left at the far plane reads as lit to a comparison, but moves filtered depths, moments and
+    // gradient fits; and the naive reproductions show their acne on exactly those planes.
+    for (std::size_t i = 0; i < kTechniqueCount; ++i) {
+        ShadowSettings settings{.technique = static_cast<ShadowTechnique>(i)};
+        const ShadowPlan plan = ShadowPlan::resolve(settings);
+        const bool compares =
+            plan.sampler == MapSampler::CompareNearest || plan.sampler == MapSampler::CompareLinear;
+        EXPECT_EQ(plan.leavesOutShadowlessPlanes, compares && !plan.traits->naive && plan.momentsFormat == 0)
+            << toString(settings.technique);
+        settings.casterFaces = CasterFaces::Both;
+        EXPECT_FALSE(ShadowPlan::resolve(settings).leavesOutShadowlessPlanes) << toString(settings.technique);
+    }
+    EXPECT_TRUE(
+        ShadowPlan::resolve({.technique = ShadowTechnique::SlopeScaledBias}).leavesOutShadowlessPlanes);
+    EXPECT_FALSE(ShadowPlan::resolve({.technique = ShadowTechnique::HardCompare}).leavesOutShadowlessPlanes);
+    EXPECT_FALSE(ShadowPlan::resolve({.technique = ShadowTechnique::Gsm}).leavesOutShadowlessPlanes);
+    EXPECT_FALSE(ShadowPlan::resolve({.technique = ShadowTechnique::Evsm}).leavesOutShadowlessPlanes);
+    ShadowSettings perTap{.technique = ShadowTechnique::ReceiverPlaneBias};
+    EXPECT_FALSE(ShadowPlan::resolve(perTap).leavesOutShadowlessPlanes);
+    perTap.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
+    EXPECT_TRUE(ShadowPlan::resolve(perTap).leavesOutShadowlessPlanes);
+}

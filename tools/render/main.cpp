@@ -39,6 +39,7 @@ struct Options {
     bool culling = true;
     bool depthPrePass = false;
     bool drawHiddenFaces = false;
+    bool drawShadowlessPlanes = false;
     bool tuneAllocator = true;
 };
 
@@ -54,6 +55,8 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --no-culling     draw chunks outside the view volume too
   --depth-prepass  lay down depth first, then shade with an EQUAL depth test
   --draw-hidden-faces  draw the faces closed meshes hide from the camera too (left out by default)
+  --draw-shadowless-planes  draw flat casters that shadow nothing into the maps too (left out by default
+                   where the technique only compares depths)
   --redraw-maps    draw the shadow maps every frame, as a moving view does (else a still view keeps them)
   --allocator A    tuned (mallopt on CPU rasterisers) or default  [tuned]
   --list-techniques  print every shadow technique's name, one a line, and exit
@@ -179,6 +182,8 @@ Options parse(int argc, char** argv) {
             options.depthPrePass = true;
         } else if (arg == "--draw-hidden-faces") {
             options.drawHiddenFaces = true;
+        } else if (arg == "--draw-shadowless-planes") {
+            options.drawShadowlessPlanes = true;
         } else if (arg == "--redraw-maps") {
             settings.reuseUnchangedMaps = false;
         } else if (arg == "--allocator") {
@@ -244,6 +249,7 @@ int main(int argc, char** argv) {
         engine.renderer().depthPrePass = options.depthPrePass;
         engine.renderer().lightingHiddenFaces =
             options.drawHiddenFaces ? engine::HiddenFaces::Draw : engine::HiddenFaces::Skip;
+        engine.renderer().leaveOutShadowlessChunks = !options.drawShadowlessPlanes;
         const shadows::ShadowModule* shadowModule = nullptr;
         if (options.shadows) {
             shadowModule = &static_cast<const shadows::ShadowModule&>(
@@ -297,6 +303,7 @@ int main(int argc, char** argv) {
                << "  \"culling\": " << (options.culling ? "true" : "false") << ",\n"
                << "  \"depthPrePass\": " << (options.depthPrePass ? "true" : "false") << ",\n"
                << "  \"drawHiddenFaces\": " << (options.drawHiddenFaces ? "true" : "false") << ",\n"
+               << "  \"drawShadowlessPlanes\": " << (options.drawShadowlessPlanes ? "true" : "false") << ",\n"
                << "  \"allocatorTuned\": " << (context.allocatorTuned() ? "true" : "false") << ",\n"
                << "  \"programsCompiled\": " << engine.programs().compileCount() << ",\n"
                << "  \"shadowTechnique\": \""
@@ -307,6 +314,10 @@ int main(int argc, char** argv) {
                << ",\n"
                << "  \"shadowCasterTexels\": " << (shadowModule ? shadowModule->stats().casterTexels : 0)
                << ",\n"
+               << "  \"shadowCasterTriangles\": "
+               << (shadowModule ? shadowModule->stats().casters.triangles : 0) << ",\n"
+               << "  \"shadowlessChunks\": "
+               << (shadowModule ? shadowModule->stats().casters.shadowlessChunks : 0) << ",\n"
                << "  \"framesReusingShadowMaps\": " << framesReusingMaps << ",\n";
         if (shadowModule && shadowModule->stats().virtualMaps) {
             // The last timed frame's pages: a static view draws none once the first frame has.

@@ -56,8 +56,8 @@ private:
 
     ShaderVariantKey variantFlag(std::string_view defineName) override { return variants_.flag(defineName); }
     GLuint reserveTextureUnit() override;
-    void drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, HiddenFaces hiddenFaces,
-                    const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) override;
+    DrawnMeshes drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, const MeshPass& pass,
+                           const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) override;
     void
     forEachMeshBounds(const Scene& scene,
                       const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) override;

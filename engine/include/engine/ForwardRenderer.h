@@ -25,6 +25,9 @@ struct FrameStats {
     std::size_t triangles = 0;
     /// Chunks left out because their bounds lie outside the camera's view volume.
     std::size_t culledChunks = 0;
+    /// Flat chunks a shadow pass left out because they shadow nothing (MeshPass::castersFor); 0 for the
+    /// lighting pass.
+    std::size_t shadowlessChunks = 0;
     /// Milliseconds of the modules' pre-passes (e.g. shadow maps) and of the lighting pass; negative unless
     /// Engine::setPassTiming enabled timing (the method is Engine::passTiming()).
     double prePassMilliseconds = -1.0;
@@ -63,7 +66,7 @@ public:
     /// @brief Draws the chunks of every mesh of `scene` that intersect the clip volume of
     /// `cullViewProjection` with the currently bound program (see ModuleHost::drawMeshes).
     /// @return Chunks drawn and culled, triangles drawn.
-    FrameStats drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, HiddenFaces hiddenFaces,
+    FrameStats drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, const MeshPass& pass,
                           const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw);
 
     /// @brief Calls `visit(entity, model, localBounds)` for every entity with a non-empty mesh; the bounds of
@@ -100,6 +103,9 @@ public:
     /// What the lighting pass does with the faces of closed parts that their other faces hide from the camera
     /// (HiddenFaces). Default Skip: the same image at about half a closed mesh's triangles.
     HiddenFaces lightingHiddenFaces = HiddenFaces::Skip;
+    /// Leave out of a shadow pass the flat chunks that shadow nothing, where the pass asks
+    /// (MeshPass::castersFor). Default true; false draws them, to compare.
+    bool leaveOutShadowlessChunks = true;
 
 private:
     struct GpuMesh {
@@ -116,6 +122,8 @@ private:
     };
     CachedMesh& cached(const std::shared_ptr<const MeshData>& mesh);
     const GpuMesh& upload(CachedMesh& entry, const MeshData& mesh);
+    /// The flat chunks of `scene`'s meshes that shadow nothing from `light`, in address order.
+    std::vector<const MeshChunk*> shadowlessChunks(const Scene& scene, const glm::vec4& light);
     void drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly,
                  FrameStats& stats);
 

@@ -5,6 +5,7 @@
 #include <engine/SurfaceClosure.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace engine {
@@ -29,6 +30,9 @@ struct MeshChunk {
     /// (empty for Open): where a pass may leave out the faces hidden behind the others (hiddenFace).
     SurfaceClosure closure = SurfaceClosure::Open;
     Aabb closedBounds;
+    /// The plane (local space, unit normal: n·p + w = 0) every vertex of the chunk lies on, for a flat one: a
+    /// shadow pass may leave out a flat chunk that nothing lies behind (chunksCastingNoShadow).
+    std::optional<glm::vec4> plane;
 };
 
 /// @brief A mesh reordered into spatially compact chunks.
@@ -43,11 +47,12 @@ struct ChunkedMesh {
     Aabb bounds;
 };
 
-/// @brief Splits `mesh` into chunks of at most `limits.maxTriangles` triangles: first by the closure of their
-/// parts (surfaceParts: open, then outward, then inward), then by recursive median splits of the triangle
-/// centroids along the longest axis, so that each chunk's bounds are tight for culling. Triangles keep their
-/// original order inside a chunk; a mesh of one closure that fits one chunk keeps its triangle order
-/// entirely. Indices out of range are the caller's to reject (the loaders do).
+/// @brief Splits `mesh` into chunks of at most `limits.maxTriangles` triangles: first by the kind of their
+/// parts (surfaceParts: open, flat open ones plane by plane, outward, inward), then by recursive median
+/// splits of the triangle centroids along the longest axis, so that each chunk's bounds are tight for
+/// culling. Triangles keep their original order inside a chunk; a mesh whose parts are of one kind and fit
+/// one chunk keeps its triangle order entirely. Indices out of range are the caller's to reject (the loaders
+/// do).
 [[nodiscard]] ChunkedMesh splitIntoChunks(const MeshData& mesh, const ChunkLimits& limits = {});
 
 } // namespace engine

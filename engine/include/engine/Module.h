@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -18,7 +19,7 @@ class Program;
 }
 
 /// @brief Bumped whenever Module, ModuleHost, FrameContext or DrawContext change layout or meaning.
-inline constexpr std::uint32_t kModuleAbiVersion = 3;
+inline constexpr std::uint32_t kModuleAbiVersion = 4;
 
 /// @brief Identifies the compiler and C++ library ABI; a module built with another one is refused,
 /// because C++ classes cross the module boundary.
@@ -30,6 +31,26 @@ inline constexpr std::uint32_t kModuleAbiVersion = 3;
 /// @brief Whether a pass draws the faces of closed parts that their other faces hide from its viewpoint
 /// (hiddenFace): leaving them out stores the same nearest depth, at about half a closed mesh's triangles.
 enum class HiddenFaces { Draw, Skip };
+
+/// @brief What a pass through ModuleHost::drawMeshes may leave out.
+struct MeshPass {
+    HiddenFaces hiddenFaces = HiddenFaces::Draw;
+    /// For a shadow pass that stores only depths compared against receivers: the light's homogeneous position
+    /// (w = 0: the direction towards a directional light). Flat chunks with no mesh of the scene behind them
+    /// as the light sees them shadow nothing, and are left out (chunksCastingNoShadow).
+    std::optional<glm::vec4> castersFor;
+};
+
+/// @brief What one ModuleHost::drawMeshes call drew and left out.
+struct DrawnMeshes {
+    /// Chunks drawn (one draw call each) and their triangles.
+    std::size_t drawCalls = 0;
+    std::size_t triangles = 0;
+    /// Chunks outside the pass's clip volume.
+    std::size_t culledChunks = 0;
+    /// Flat chunks left out because they shadow nothing (MeshPass::castersFor).
+    std::size_t shadowlessChunks = 0;
+};
 
 /// @brief Services the engine offers to attached modules.
 class ModuleHost {
@@ -48,8 +69,9 @@ public:
     /// model)` runs once per mesh with a visible chunk, sets per-draw state and may return false to skip that
     /// mesh. Used by pre-passes (e.g. shadow maps) with their own program. With HiddenFaces::Skip the host
     /// sets the cull-face state per chunk and leaves culling disabled; with Draw it leaves that state alone.
-    virtual void drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, HiddenFaces hiddenFaces,
-                            const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) = 0;
+    virtual DrawnMeshes
+    drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, const MeshPass& pass,
+               const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) = 0;
     /// @brief Calls `visit(entity, model, localBounds)` for every entity with a mesh; each mesh's bounds are
     /// computed once, so per-frame fits (e.g. a light's frustum) need not walk vertices.
     virtual void forEachMeshBounds(

@@ -201,8 +201,10 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
     }
 }
 
-void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
-                              std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) {
+engine::DrawnMeshes FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
+                                             std::span<const MapSlot> slots,
+                                             const CasterOmissions& omissions) {
+    engine::DrawnMeshes drawnMeshes;
     for (std::size_t layer = 0; maps_ && layer < slots.size(); ++layer) {
         const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
         const LightProjection& projection = slots[layer].projection;
@@ -216,11 +218,12 @@ void FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Prog
             glEnable(GL_SCISSOR_TEST);
             glScissor(drawn.x, drawn.y, drawn.z, drawn.w);
         }
-        drawCasters(host_, scene, program, projection, hiddenFaces);
+        accumulate(drawnMeshes, drawCasters(host_, scene, program, projection, omissions));
         if (!whole) {
             glDisable(GL_SCISSOR_TEST);
         }
     }
+    return drawnMeshes;
 }
 
 void FittedShadowMaps::blurMoments(const engine::gl::Program& blur, GLuint unit) {

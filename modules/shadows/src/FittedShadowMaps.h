@@ -25,8 +25,8 @@ public:
 
     void allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
                   std::vector<LightMapsBlock>& lights) override;
-    void render(const engine::Scene& scene, const engine::gl::Program& program,
-                std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) override;
+    engine::DrawnMeshes render(const engine::Scene& scene, const engine::gl::Program& program,
+                               std::span<const MapSlot> slots, const CasterOmissions& omissions) override;
     void blurMoments(const engine::gl::Program& blur, GLuint unit) override;
     [[nodiscard]] const ShadowMapArray* sampled() const override { return maps_.get(); }
     [[nodiscard]] std::size_t bytes() const override;

@@ -55,19 +55,36 @@ glm::ivec4 drawnTexels(const LightProjection& projection, int side) {
     return {low, glm::max(high - low, glm::ivec2(0))};
 }
 
-void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
-                 const LightProjection& projection, engine::HiddenFaces hiddenFaces) {
+glm::vec4 lightPosition(const LightProjection& projection) {
+    const glm::mat4 worldFromLight = glm::inverse(projection.view);
+    // GL's eye looks down its -z: a directional light lies towards +z.
+    return projection.perspective ? worldFromLight[3] : worldFromLight[2];
+}
+
+void accumulate(engine::DrawnMeshes& total, const engine::DrawnMeshes& drawn) {
+    total.drawCalls += drawn.drawCalls;
+    total.triangles += drawn.triangles;
+    total.culledChunks += drawn.culledChunks;
+    total.shadowlessChunks += drawn.shadowlessChunks;
+}
+
+engine::DrawnMeshes drawCasters(engine::ModuleHost& host, const engine::Scene& scene,
+                                const engine::gl::Program& program, const LightProjection& projection,
+                                const CasterOmissions& omissions) {
     const glm::mat4 viewProjection = projection.projection * projection.view;
     program.set("uLightViewProjection", viewProjection);
     program.set("uDepthRange", projection.depthRange);
     const glm::dvec2 low(projection.drawnRegion.x, projection.drawnRegion.y);
     const glm::dvec2 size =
         glm::max(glm::dvec2(projection.drawnRegion.z, projection.drawnRegion.w) - low, glm::dvec2(1e-6));
-    host.drawMeshes(scene, glm::mat4(textureRectClip(low, size)) * viewProjection, hiddenFaces,
-                    [&](engine::EntityId, const glm::mat4& model) {
-                        program.set("uModel", model);
-                        return true;
-                    });
+    const engine::MeshPass pass{omissions.hiddenFaces, omissions.shadowlessPlanes
+                                                           ? std::optional(lightPosition(projection))
+                                                           : std::nullopt};
+    return host.drawMeshes(scene, glm::mat4(textureRectClip(low, size)) * viewProjection, pass,
+                           [&](engine::EntityId, const glm::mat4& model) {
+                               program.set("uModel", model);
+                               return true;
+                           });
 }
 
 } // namespace shadows

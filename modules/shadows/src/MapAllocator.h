@@ -49,6 +49,17 @@ struct OnceWarnings {
 /// cube face, fitted to the view) and VirtualShadowMaps (pages only where visible pixels ask, in a fixed
 /// budget, cached). Both describe a light's maps as slots and a LightMapsBlock, and receiver.glsl resolves
 /// the layout before a technique's lookup, so no technique knows which one it reads.
+/// @brief What the caster pass leaves out (ShadowSettings::casterFaces,
+/// ShadowPlan::leavesOutShadowlessPlanes).
+struct CasterOmissions {
+    /// The faces of closed parts turned away from the light: the depth stored is the same
+    /// (engine::hiddenFace).
+    engine::HiddenFaces hiddenFaces = engine::HiddenFaces::Draw;
+    /// Flat chunks with nothing behind them as the light sees them (engine::chunksCastingNoShadow): the
+    /// texels they would fill read as lit instead of as their own surface.
+    bool shadowlessPlanes = false;
+};
+
 class MapAllocator {
 public:
     virtual ~MapAllocator() = default;
@@ -59,10 +70,10 @@ public:
     virtual void allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
                           std::vector<LightMapsBlock>& lights) = 0;
     /// @brief Draws this frame's maps, as the slots of the last allocate describe them, with `program` (the
-    /// shadow pass's, in use with its depth state and uniform block set), and the casters' hidden faces as
-    /// `hiddenFaces` says (drawCasters).
-    virtual void render(const engine::Scene& scene, const engine::gl::Program& program,
-                        std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) = 0;
+    /// shadow pass's, in use with its depth state and uniform block set), leaving out what `omissions` says
+    /// (drawCasters).
+    virtual engine::DrawnMeshes render(const engine::Scene& scene, const engine::gl::Program& program,
+                                       std::span<const MapSlot> slots, const CasterOmissions& omissions) = 0;
     /// @brief Blurs the moments drawn this frame with `blur` (shaders/shadows/blur.frag, in use, a fullscreen
     /// triangle bound), sampling through texture unit `unit`.
     virtual void blurMoments(const engine::gl::Program& blur, GLuint unit) = 0;
@@ -105,11 +116,18 @@ void clearMapTargets(const ShadowMapArray& maps, GLuint framebuffer, const Shado
 /// the first's x and y, then the width and height (the whole map for the region (0, 0, 1, 1)).
 glm::ivec4 drawnTexels(const LightProjection& projection, int side);
 
+/// @brief The light `projection` sees from, homogeneous: its eye for a perspective map, the direction
+/// towards the light (w = 0) for an orthographic one.
+glm::vec4 lightPosition(const LightProjection& projection);
+
 /// @brief Draws the casters of `scene` seen through `projection` with `program` (the shadow pass's, in use),
 /// culled to the clip volume of its drawnRegion: casters outside it could not write a texel read. Texels
-/// outside the region are the caller's to scissor. With HiddenFaces::Skip, the faces of closed parts turned
-/// away from the light are left out (the depth stored is the same; engine::hiddenFace).
-void drawCasters(engine::ModuleHost& host, const engine::Scene& scene, const engine::gl::Program& program,
-                 const LightProjection& projection, engine::HiddenFaces hiddenFaces);
+/// outside the region are the caller's to scissor. Leaves out what `omissions` says.
+engine::DrawnMeshes drawCasters(engine::ModuleHost& host, const engine::Scene& scene,
+                                const engine::gl::Program& program, const LightProjection& projection,
+                                const CasterOmissions& omissions);
+
+/// @brief Adds `drawn`'s counts to `total`'s.
+void accumulate(engine::DrawnMeshes& total, const engine::DrawnMeshes& drawn);
 
 } // namespace shadows

@@ -107,6 +107,7 @@ ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
     stats.shadowMaps = static_cast<int>(slots_.size());
     stats.reusedMaps = reusedMaps_;
+    stats.casters = casters_;
     if (allocation_) {
         stats.bytes = allocation_->bytes();
         stats.virtualMaps = allocation_->servedVirtualMaps();
@@ -266,6 +267,7 @@ engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBloc
 }
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
+    casters_ = {};
     // Fitted here rather than in prepareFrame, so the pass timing includes the view's sample pass. World
     // bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
     MapInputs inputs{
@@ -314,9 +316,10 @@ void ShadowModule::drawMaps(const engine::FrameContext& frame) {
         glPolygonOffset(settings_.slopeScale, settings_.slopeUnits);
     }
     glDisable(GL_FRAMEBUFFER_SRGB);
-    allocation_->render(frame.scene, program, slots_,
-                        settings_.casterFaces == CasterFaces::Auto ? engine::HiddenFaces::Skip
-                                                                   : engine::HiddenFaces::Draw);
+    const CasterOmissions omissions{settings_.casterFaces == CasterFaces::Auto ? engine::HiddenFaces::Skip
+                                                                               : engine::HiddenFaces::Draw,
+                                    plan_.leavesOutShadowlessPlanes};
+    casters_ = allocation_->render(frame.scene, program, slots_, omissions);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_CULL_FACE);
     if (plan_.blursMoments) {

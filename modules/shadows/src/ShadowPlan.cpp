@@ -137,6 +137,10 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
         plan.momentLevels = 1 + static_cast<int>(std::log2(momentSoftRadiusLimit(settings)));
     }
     plan.needsJitterTexture = plan.traits->jittered;
+    plan.leavesOutShadowlessPlanes =
+        settings.casterFaces == CasterFaces::Auto && !plan.traits->naive &&
+        (plan.sampler == MapSampler::CompareNearest || plan.sampler == MapSampler::CompareLinear) &&
+        plan.momentsFormat == 0 && !plan.readsPointGradient;
     // Two texels cover a bilinear footprint and central differences around any tap.
     plan.softReachTexels = plan.traits->softReachTexels ? plan.traits->softReachTexels(settings) : 0.0f;
     const float taps = plan.usesTapPattern || plan.traits->jittered ? settings.pcfRadius : 0.0f;

@@ -106,7 +106,8 @@ const std::vector<SettingRow>& rows() {
         {"casterFaces", "", "caster faces",
          "Faces (as seen from the light) drawn into the shadow map. auto: both of open meshes, since real "
          "models mix windings and a culled face casts no shadow; of closed ones only those facing the light, "
-         "which store the same depth at about half the triangles.",
+         "which store the same depth at about half the triangles; and, where the technique only compares "
+         "depths, no flat caster that nothing lies behind as the light sees it (a ground, a room's walls).",
          choice<CasterFaces, &S::casterFaces>(), always, "--caster-faces"},
         {"constantBiasTexels", "texels", "constant bias",
          "Receiver moved towards the light before the comparison, in shadow texel sizes at the receiver (so "

@@ -641,10 +641,11 @@ void VirtualShadowMaps::blurMoments(const engine::gl::Program& blur, GLuint unit
     glDisable(GL_SCISSOR_TEST);
 }
 
-void VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
-                               std::span<const MapSlot>, engine::HiddenFaces hiddenFaces) {
+engine::DrawnMeshes VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
+                                              std::span<const MapSlot>, const CasterOmissions& omissions) {
+    engine::DrawnMeshes drawnMeshes;
     if (toRender_.empty()) {
-        return;
+        return drawnMeshes;
     }
     const int perLayer = tilesPerRow_ * tilesPerRow_;
     std::map<int, const Light*> byIndex;
@@ -664,13 +665,16 @@ void VirtualShadowMaps::render(const engine::Scene& scene, const engine::gl::Pro
         glScissor(cell.x * tile_, cell.y * tile_, tile_, tile_);
         clearMapTargets(*atlas_, atlas_->framebuffers[static_cast<std::size_t>(layer)].id(), plan_);
         const Light& light = *byIndex.at(key.light);
-        drawCasters(host_, scene, program,
-                    light.faceCount == 0 ? light.geometry.pageProjection(key.level, key.page, border_)
-                                         : light.faces[static_cast<std::size_t>(key.face)].pageProjection(
-                                               key.level, key.page, border_),
-                    hiddenFaces);
+        accumulate(drawnMeshes,
+                   drawCasters(host_, scene, program,
+                               light.faceCount == 0
+                                   ? light.geometry.pageProjection(key.level, key.page, border_)
+                                   : light.faces[static_cast<std::size_t>(key.face)].pageProjection(
+                                         key.level, key.page, border_),
+                               omissions));
     }
     glDisable(GL_SCISSOR_TEST);
+    return drawnMeshes;
 }
 
 } // namespace shadows

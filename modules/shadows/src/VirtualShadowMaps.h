@@ -47,8 +47,8 @@ public:
     void allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
                   std::vector<LightMapsBlock>& lights) override;
     /// @brief Draws this frame's new pages (the slots are the levels they crop), clearing each tile first.
-    void render(const engine::Scene& scene, const engine::gl::Program& program,
-                std::span<const MapSlot> slots, engine::HiddenFaces hiddenFaces) override;
+    engine::DrawnMeshes render(const engine::Scene& scene, const engine::gl::Program& program,
+                               std::span<const MapSlot> slots, const CasterOmissions& omissions) override;
     /// @brief Blurs the moments of this frame's new pages, each within its tile, through a tile-sized
     /// temporary: the border holds the blur's reach (ShadowPlan::kernelReachTexels), so page edges blur as a
     /// whole map's interior would.

@@ -97,7 +97,7 @@ void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& 
     program.set("uLightViewProjection", viewProjection);
     // The faces closed parts hide from the camera are left out, as the lighting pass leaves them: the same
     // depth.
-    host.drawMeshes(frame.scene, viewProjection, engine::HiddenFaces::Skip,
+    host.drawMeshes(frame.scene, viewProjection, engine::MeshPass{engine::HiddenFaces::Skip, std::nullopt},
                     [&](engine::EntityId, const glm::mat4& model) {
                         program.set("uModel", model);
                         return true;

@@ -50,6 +50,8 @@ struct ShadowStats {
     bool virtualMaps = false;
     /// The virtual maps' page counters in the last frame (zero without virtual maps).
     VirtualPageStats pages;
+    /// What the caster pass drew and left out in the last frame, over every map (zero when it drew none).
+    engine::DrawnMeshes casters;
 };
 
 /// @brief The shadow module: shadow maps for shadow-casting lights and the lighting-pass visibility of the
@@ -159,6 +161,7 @@ private:
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds
     std::unique_ptr<MapInputs> drawnFrom_;          // what the fitted maps in place were drawn from
     bool reusedMaps_ = false;                       // this frame kept them
+    engine::DrawnMeshes casters_;                   // what this frame's caster pass drew
     std::uint64_t frameIndex_ = 0;
     bool dirty_ = true;
 };

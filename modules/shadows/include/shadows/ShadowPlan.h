@@ -82,6 +82,12 @@ struct ShadowPlan {
     /// The soft techniques' part of kernelReachTexels (their widest penumbra), which a light of no size
     /// does not need.
     float softReachTexels = 0.0f;
+    /// The caster pass leaves out flat casters with nothing behind them as the light sees them
+    /// (engine::chunksCastingNoShadow), with casterFaces auto: a ground under the model, walls around a
+    /// light. Only where every read of the map is a comparison, which such a texel can only turn to shadow
+    /// falsely, and not for the naive reproductions, whose acne on those planes is what they show. Filtered
+    /// depth, moments and gradient fits read the depth values themselves: there the plane stays.
+    bool leavesOutShadowlessPlanes = false;
     /// The stratified jitter texture of jittered PCF is bound.
     bool needsJitterTexture = false;
 };

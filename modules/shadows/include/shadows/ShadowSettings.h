@@ -25,6 +25,8 @@ enum class DepthFormat { D16, D24, D32F };
 enum class CasterFaces {
     /// Only the light-facing faces of a mesh's closed parts, which store the same depth (engine::hiddenFace),
     /// and both faces of the others: real models often mix windings or leave holes, and are then drawn whole.
+    /// Techniques that only compare also leave out flat casters that shadow nothing
+    /// (ShadowPlan::leavesOutShadowlessPlanes).
     Auto,
     Both,  ///< every triangle: right for meshes of any winding
     Front, ///< triangles facing the light (counter-clockwise seen from it)
