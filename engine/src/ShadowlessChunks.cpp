@@ -61,6 +61,14 @@ bool castsNoShadow(const glm::vec4& plane, const glm::vec4& light, std::span<con
 std::vector<const MeshChunk*> chunksCastingNoShadow(std::span<const PlacedChunks> meshes,
                                                     const glm::vec4& light) {
     std::vector<const MeshChunk*> shadowless;
+    // The scene's world box first: a plane with all of it on the light's side needs no mesh by mesh look
+    // (a ground, a room's walls), which keeps a scene of many flat meshes from costing their square.
+    Aabb sceneBox;
+    for (const PlacedChunks& mesh : meshes) {
+        for (const glm::vec3& corner : worldCorners(mesh.bounds, mesh.model)) {
+            sceneBox.extend(corner);
+        }
+    }
     for (const PlacedChunks& flatMesh : meshes) {
         for (const MeshChunk& flat : flatMesh.chunks) {
             if (!flat.plane) {
@@ -80,21 +88,24 @@ std::vector<const MeshChunk*> chunksCastingNoShadow(std::span<const PlacedChunks
             const auto onLightSide = [&](const Aabb& box, const glm::mat4& model) {
                 return castsNoShadow(*plane, light, worldCorners(box, model), tolerance);
             };
-            const bool noneBehind = std::all_of(meshes.begin(), meshes.end(), [&](const PlacedChunks& mesh) {
-                return onLightSide(mesh.bounds, mesh.model) ||
-                       std::all_of(mesh.chunks.begin(), mesh.chunks.end(), [&](const MeshChunk& chunk) {
-                           if (&chunk == &flat) {
-                               return true;
-                           }
-                           if (chunk.plane) {
-                               const std::optional<glm::vec4> other = worldPlane(*chunk.plane, mesh.model);
-                               if (other && samePlane(*plane, *other, tolerance, reach)) {
+            const bool noneBehind =
+                castsNoShadow(*plane, light, sceneBox.corners(), tolerance) ||
+                std::all_of(meshes.begin(), meshes.end(), [&](const PlacedChunks& mesh) {
+                    return onLightSide(mesh.bounds, mesh.model) ||
+                           std::all_of(mesh.chunks.begin(), mesh.chunks.end(), [&](const MeshChunk& chunk) {
+                               if (&chunk == &flat) {
                                    return true;
                                }
-                           }
-                           return onLightSide(chunk.bounds, mesh.model);
-                       });
-            });
+                               if (chunk.plane) {
+                                   const std::optional<glm::vec4> other =
+                                       worldPlane(*chunk.plane, mesh.model);
+                                   if (other && samePlane(*plane, *other, tolerance, reach)) {
+                                       return true;
+                                   }
+                               }
+                               return onLightSide(chunk.bounds, mesh.model);
+                           });
+                });
             if (noneBehind) {
                 shadowless.push_back(&flat);
             }
