@@ -215,8 +215,9 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
                                        const MeshPass& pass,
                                        const std::function<bool(EntityId, const glm::mat4&)>& beforeDraw) {
     FrameStats stats;
-    const std::vector<const MeshChunk*> shadowless =
-        pass.castersFor && leaveOutShadowlessChunks ? shadowlessChunks(scene, *pass.castersFor) : std::vector<const MeshChunk*>{};
+    const std::vector<const MeshChunk*> shadowless = pass.castersFor && leaveOutShadowlessChunks
+                                                         ? shadowlessChunks(scene, *pass.castersFor)
+                                                         : std::vector<const MeshChunk*>{};
     std::vector<const MeshChunk*> visible;
     // The cull-face state set last (GL_NONE: disabled), once this pass has set it.
     std::optional<GLenum> culled;
@@ -276,34 +277,34 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
                                                                             : 0;
     const ShaderVariantKey sceneBits =
         (sceneHasPositionalLights_ ? positionalLightsFlag_ : 0) | outputBits | lightCountBits_;
+    const MeshPass pass{lightingHiddenFaces, std::nullopt};
     const FrameStats drawn =
-        drawMeshes(frame.scene, frame.viewProjection, MeshPass{lightingHiddenFaces, std::nullopt},
-                   [&](EntityId id, const glm::mat4& model) {
-                       if (depthOnly) {
-                           programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
-                           return true;
-                       }
-                       const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
-                       const DrawContext draw{frame, id, mesh, model};
-                       ShaderVariantKey key = sceneBits;
-                       if (mesh.normals.size() != mesh.positions.size()) {
-                           key |= flatNormalsFlag_;
-                       }
-                       for (const Module* module : modules) {
-                           key |= module->variantBits(draw);
-                       }
-                       const gl::Program& program = programs_.get(kForwardProgram, key);
-                       program.use();
-                       program.set("uModel", model);
-                       program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
-                       program.set("uBaseColor", mesh.material.baseColor);
-                       program.set("uSpecularColor", mesh.material.specularColor);
-                       program.set("uShininess", mesh.material.shininess);
-                       for (Module* module : modules) {
-                           module->bindLightingResources(program, draw);
-                       }
-                       return true;
-                   });
+        drawMeshes(frame.scene, frame.viewProjection, pass, [&](EntityId id, const glm::mat4& model) {
+            if (depthOnly) {
+                programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
+                return true;
+            }
+            const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
+            const DrawContext draw{frame, id, mesh, model};
+            ShaderVariantKey key = sceneBits;
+            if (mesh.normals.size() != mesh.positions.size()) {
+                key |= flatNormalsFlag_;
+            }
+            for (const Module* module : modules) {
+                key |= module->variantBits(draw);
+            }
+            const gl::Program& program = programs_.get(kForwardProgram, key);
+            program.use();
+            program.set("uModel", model);
+            program.set("uNormalMatrix", glm::mat3(glm::transpose(glm::inverse(model))));
+            program.set("uBaseColor", mesh.material.baseColor);
+            program.set("uSpecularColor", mesh.material.specularColor);
+            program.set("uShininess", mesh.material.shininess);
+            for (Module* module : modules) {
+                module->bindLightingResources(program, draw);
+            }
+            return true;
+        });
     if (!depthOnly) {
         stats.drawCalls += drawn.drawCalls;
         stats.triangles += drawn.triangles;
