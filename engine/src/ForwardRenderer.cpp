@@ -51,6 +51,43 @@ float shaderLightType(LightType type) {
     throw Error("render: unknown light type " + std::to_string(static_cast<int>(type)));
 }
 
+/// The texture format whose depth a blit copies into `framebuffer`'s depth buffer: blits need the same
+/// depth and stencil formats. 0 when that buffer cannot take an exact copy: none, multisampled, or a format
+/// with no matching texture or whose copy is not exact.
+GLenum copyableDepthFormat(GLuint framebuffer) {
+    GLint sampleBuffers = 0;
+    glGetNamedFramebufferParameteriv(framebuffer, GL_SAMPLE_BUFFERS, &sampleBuffers);
+    const GLenum attachment = framebuffer == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+    GLint type = GL_NONE;
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+                                               &type);
+    if (sampleBuffers != 0 || type == GL_NONE) {
+        return 0;
+    }
+    GLint depthBits = 0;
+    GLint stencilBits = 0;
+    GLint componentType = GL_NONE;
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE,
+                                               &depthBits);
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment,
+                                               GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer, attachment,
+                                               GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
+    const bool isFloat = componentType == GL_FLOAT;
+    if (depthBits == 32 && isFloat) {
+        return stencilBits == 8 ? GL_DEPTH32F_STENCIL8 : stencilBits == 0 ? GL_DEPTH_COMPONENT32F : 0;
+    }
+    if (isFloat || componentType != GL_UNSIGNED_NORMALIZED) {
+        return 0;
+    }
+    // Not packed 24-bit depth with stencil (a window's usual buffer): llvmpipe copies its depth alone,
+    // leaving the stencil, through a shader, and the depths it writes then fail the EQUAL test.
+    if (depthBits == 24) {
+        return stencilBits == 0 ? GL_DEPTH_COMPONENT24 : 0;
+    }
+    return depthBits == 16 && stencilBits == 0 ? GL_DEPTH_COMPONENT16 : 0;
+}
+
 } // namespace
 
 ForwardRenderer::ForwardRenderer(ShaderVariantLayout& layout, ProgramCache& programs)
@@ -71,6 +108,7 @@ void ForwardRenderer::releaseUnreferencedMeshes() {
 FrameContext ForwardRenderer::beginFrame(const Scene& scene, EntityId camera, const FrameTarget& target,
                                          std::uint64_t frameIndex) {
     releaseUnreferencedMeshes();
+    viewDepthFrame_.reset();
     const Entity& cameraEntity = scene.entity(camera);
     if (!cameraEntity.camera) {
         throw Error("render: entity '" + cameraEntity.name + "' has no camera component");
@@ -270,7 +308,17 @@ FrameStats ForwardRenderer::drawMeshes(const Scene& scene, const glm::mat4& cull
     return stats;
 }
 
-void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly,
+void ForwardRenderer::drawDepth(const FrameContext& frame) {
+    const gl::Program& program = programs_.get(kDepthOnlyProgram, 0);
+    program.use();
+    drawMeshes(frame.scene, frame.viewProjection, MeshPass{lightingHiddenFaces, std::nullopt},
+               [&](EntityId, const glm::mat4& model) {
+                   program.set("uModel", model);
+                   return true;
+               });
+}
+
+void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const> modules,
                               FrameStats& stats) {
     const ShaderVariantKey outputBits = output == OutputMode::WorldPosition ? worldPositionFlag_
                                         : output == OutputMode::WorldNormal ? worldNormalFlag_
@@ -280,10 +328,6 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
     const MeshPass pass{lightingHiddenFaces, std::nullopt};
     const FrameStats drawn =
         drawMeshes(frame.scene, frame.viewProjection, pass, [&](EntityId id, const glm::mat4& model) {
-            if (depthOnly) {
-                programs_.get(kDepthOnlyProgram, 0).set("uModel", model);
-                return true;
-            }
             const MeshData& mesh = *frame.scene.entity(id).mesh->mesh;
             const DrawContext draw{frame, id, mesh, model};
             ShaderVariantKey key = sceneBits;
@@ -305,10 +349,75 @@ void ForwardRenderer::drawLit(const FrameContext& frame, std::span<Module* const
             }
             return true;
         });
-    if (!depthOnly) {
-        stats.drawCalls += drawn.drawCalls;
-        stats.triangles += drawn.triangles;
-        stats.culledChunks += drawn.culledChunks;
+    stats.drawCalls += drawn.drawCalls;
+    stats.triangles += drawn.triangles;
+    stats.culledChunks += drawn.culledChunks;
+}
+
+bool ForwardRenderer::holdsViewDepthOf(const FrameContext& frame) const {
+    return viewDepthFrame_ && viewDepthFrame_->first == frame.frameIndex &&
+           viewDepthFrame_->second.framebuffer == frame.target.framebuffer &&
+           viewDepthFrame_->second.size == frame.target.size;
+}
+
+GLuint ForwardRenderer::viewDepth(const FrameContext& frame) {
+    if (holdsViewDepthOf(frame)) {
+        return viewDepthTexture_->id();
+    }
+    const glm::ivec2 size = frame.target.size;
+    if (!shareViewDepth || size.x <= 0 || size.y <= 0) {
+        return 0;
+    }
+    const GLenum format = copyableDepthFormat(frame.target.framebuffer);
+    if (format == 0) {
+        return 0;
+    }
+    if (!viewDepthTexture_ || viewDepthTexture_->internalFormat() != format ||
+        viewDepthTexture_->size() != size) {
+        viewDepthTexture_.emplace(format, size);
+        viewDepthTexture_->setFilter(GL_NEAREST, GL_NEAREST);
+        viewDepthFramebuffer_.emplace("render: view depth");
+        viewDepthFramebuffer_->attach(GL_DEPTH_ATTACHMENT, *viewDepthTexture_);
+        viewDepthFramebuffer_->setDrawBuffers({GL_NONE});
+        viewDepthFramebuffer_->check();
+    }
+    viewDepthFramebuffer_->bind();
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
+    drawDepth(frame);
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
+    glViewport(0, 0, size.x, size.y);
+    viewDepthFrame_.emplace(frame.frameIndex, frame.target);
+    return viewDepthTexture_->id();
+}
+
+void ForwardRenderer::copyViewDepth(const FrameTarget& target) const {
+    // Only the rectangle the lighting pass may touch: a scissor box, if one is set (the sandbox's split view
+    // draws each side with its own engine). The copy itself runs unscissored: llvmpipe blits a scissored
+    // depth copy through a shader, whose depths then fail the EQUAL test, where an unscissored one copies
+    // the texels.
+    glm::ivec4 box{0, 0, target.size.x, target.size.y};
+    const bool scissored = glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+    if (scissored) {
+        glm::ivec4 scissor{0};
+        glGetIntegerv(GL_SCISSOR_BOX, &scissor.x);
+        const glm::ivec2 low = glm::clamp(glm::ivec2(scissor.x, scissor.y), glm::ivec2(0), target.size);
+        const glm::ivec2 high =
+            glm::clamp(glm::ivec2(scissor.x + scissor.z, scissor.y + scissor.w), low, target.size);
+        box = {low, high};
+        glDisable(GL_SCISSOR_TEST);
+    }
+    // The formats match (copyableDepthFormat), so the copy holds the very depths drawing them here would.
+    glBlitNamedFramebuffer(viewDepthFramebuffer_->id(), target.framebuffer, box.x, box.y, box.z, box.w, box.x,
+                           box.y, box.z, box.w, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    if (scissored) {
+        glEnable(GL_SCISSOR_TEST);
     }
 }
 
@@ -326,19 +435,24 @@ FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Mo
         glClearColor(0.0f, 0.0f, 0.0f, 0.0f); // alpha 1 marks the pixels a surface covers (forward.frag)
     }
     glClearDepth(1.0);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    FrameStats stats;
+    stats.sharedViewDepth = holdsViewDepthOf(frame);
+    viewDepthFrame_.reset();
+    glClear(stats.sharedViewDepth ? GL_COLOR_BUFFER_BIT : GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
 
-    FrameStats stats;
-    if (depthPrePass) {
-        programs_.get(kDepthOnlyProgram, 0).use();
+    if (stats.sharedViewDepth) {
+        copyViewDepth(frame.target);
+    } else if (depthPrePass) {
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        drawLit(frame, modules, true, stats);
+        drawDepth(frame);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+    if (stats.sharedViewDepth || depthPrePass) {
         glDepthFunc(GL_EQUAL);
         glDepthMask(GL_FALSE);
     }
-    drawLit(frame, modules, false, stats);
+    drawLit(frame, modules, stats);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     return stats;

@@ -60,6 +60,9 @@ Rendered render(const engine::Scene& scene, engine::EntityId camera, std::uint32
     engine.renderer().chunkLimits.maxTriangles = chunkTriangles;
     engine.renderer().culling = culling;
     engine.renderer().depthPrePass = depthPrePass;
+    // Without a pre-pass, depth is drawn by the lighting pass itself, not by the sample pass's shared one
+    // (ViewDepthGLTest, SharedViewDepth).
+    engine.renderer().shareViewDepth = false;
     shadows::ShadowSettings settings;
     settings.technique = shadows::ShadowTechnique::Gsm;
     settings.resolution = 1024;

@@ -2,7 +2,8 @@
 // every map layout (one map, cascades, cube faces) and technique family, exactly; the orthographic lookups of
 // frames whose maps are all directional, the vertex stage's projection, and the faces of closed meshes left
 // out of the sample, caster and lighting passes, within float tolerance. Flat casters that shadow nothing,
-// left out of the caster pass of techniques that only compare, only ever take away a false shadow.
+// left out of the caster pass of techniques that only compare, only ever take away a false shadow. The sample
+// pass taking the lighting pass's depth pre-pass changes lookups within float tolerance.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>
@@ -14,9 +15,11 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <ostream>
@@ -429,5 +432,91 @@ INSTANTIATE_TEST_SUITE_P(, OrthographicLookups,
                                                     ShadowTechnique::NormalOffset,
                                                     ShadowTechnique::AdaptiveBias, ShadowTechnique::Evsm})),
                          caseName);
+
+struct SharedViewDepthCase {
+    std::string name;
+    std::string scene;
+    MapAllocation maps = MapAllocation::Fitted;
+    int cascadeCount = 0;
+    bool frozenFit = false; // fitted to another view than the camera's: its depth is not the lighting pass's
+    bool samplesTheView =
+        true; // a sun's maps fitted to the camera's samples, or virtual pages marked from them
+};
+
+void PrintTo(const SharedViewDepthCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+struct SampledFrame {
+    engine::Image image;
+    bool moduleShared = false;   // ShadowStats::sharedViewDepth
+    bool lightingShared = false; // FrameStats::sharedViewDepth
+};
+
+/// Three frames of the scene, the last a still view's, which keeps the maps (virtual maps are kept once a
+/// frame drew no page), the sample pass taking the lighting pass's depth where `share`.
+std::array<SampledFrame, 3> sampledFrames(const content::LoadedScene& loaded, const SharedViewDepthCase& c,
+                                          bool share) {
+    ShadowSettings settings;
+    settings.resolution = 512;
+    settings.mapAllocation = c.maps;
+    settings.cascadeCount = c.cascadeCount;
+    engine::Engine engine;
+    engine.renderer().shareViewDepth = share;
+    auto& shadows = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    const engine::EntityId camera = *loaded.scene.firstCamera();
+    const glm::ivec2 size{160, 120};
+    if (c.frozenFit) {
+        const engine::CameraComponent& lens = *loaded.scene.entity(camera).camera;
+        const glm::mat4 view = glm::inverse(loaded.scene.worldMatrix(camera));
+        shadows.setFitView(FitView{glm::translate(view, glm::vec3(0.05f, 0.0f, 0.0f)),
+                                   lens.projectionMatrix(float(size.x) / float(size.y))});
+    }
+    engine::RenderTarget target(size);
+    std::array<SampledFrame, 3> frames;
+    for (SampledFrame& frame : frames) {
+        const engine::FrameStats stats = engine.renderFrame(loaded.scene, camera, target);
+        frame = {target.readPixels(), shadows.stats().sharedViewDepth, stats.sharedViewDepth};
+    }
+    return frames;
+}
+
+class SharedViewDepth : public ::testing::TestWithParam<SharedViewDepthCase> {};
+
+// The sample pass's depth of the camera's view is the lighting pass's depth pre-pass, drawn once for both:
+// the maps fit the same samples (read at the target's depth format, D24, rather than D32F), and the lighting
+// pass, shading against that depth, draws the same frame. A still view's frame runs no sample pass, nor do
+// point lights' maps, and a fit to another view draws its own.
+TEST_P(SharedViewDepth, TheSamplePassTakesTheLightingPassDepth) {
+    glTestContext();
+    const SharedViewDepthCase& c = GetParam();
+    const content::LoadedScene loaded = loadScene(c.scene);
+    const std::array<SampledFrame, 3> shared = sampledFrames(loaded, c, true);
+    const std::array<SampledFrame, 3> own = sampledFrames(loaded, c, false);
+    EXPECT_EQ(shared[0].moduleShared, c.samplesTheView) << c.name;
+    EXPECT_EQ(shared[0].lightingShared, c.samplesTheView) << c.name;
+    for (const SampledFrame& frame : {own[0], own[1], own[2], shared[2]}) {
+        EXPECT_FALSE(frame.moduleShared) << c.name;
+        EXPECT_FALSE(frame.lightingShared) << c.name;
+    }
+    if (!c.samplesTheView) {
+        expectSameImage(shared[0].image, own[0].image, c.name);
+    } else {
+        expectSameLookups(shared[0].image, own[0].image, c.name);
+    }
+    expectSameImage(shared[2].image, shared[0].image, c.name + ", still");
+}
+
+// knob: a sun's map fitted to the samples; outdoor: cascades; virtual pages, marked from the samples; room:
+// point lights only; and a frozen fit.
+INSTANTIATE_TEST_SUITE_P(
+    , SharedViewDepth,
+    ::testing::Values(SharedViewDepthCase{"knob", "knob"},
+                      SharedViewDepthCase{"outdoor_cascades", "outdoor", MapAllocation::Fitted, 3},
+                      SharedViewDepthCase{"room_point_lights", "room", MapAllocation::Fitted, 0, false,
+                                          false},
+                      SharedViewDepthCase{"knob_virtual", "knob", MapAllocation::Virtual},
+                      SharedViewDepthCase{"knob_frozen_fit", "knob", MapAllocation::Fitted, 0, true, false}),
+    caseName);
 
 } // namespace

@@ -108,6 +108,10 @@ TEST(SampleDistributionGLTest, TheGpuReductionEqualsItsCpuMirror) {
     engine::EntityId camera = engine::kNoEntity;
     const engine::Scene scene = mergedApron(camera);
     engine::Engine engine;
+    // The sample pass's own D32F depth: the lighting pass's D24 one (ModuleHost::viewDepth) reads back a step
+    // away from what the shader fetches, 0.1 m at this view's 900 m, which is the format's, not the
+    // reduction's.
+    engine.renderer().shareViewDepth = false;
     auto& probe = static_cast<SampleProbe&>(engine.addModule(std::make_unique<SampleProbe>()));
     engine::RenderTarget target({320, 240});
     engine.renderFrame(scene, camera, target);

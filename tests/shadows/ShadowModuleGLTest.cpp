@@ -393,7 +393,8 @@ TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     EXPECT_EQ(module.stats().shadowMaps, 0);
     EXPECT_EQ(engine.programs().compileCount(), 2u);
 
-    // Two casting lights: two D16 maps, one shadowed lighting variant plus the depth program.
+    // Two casting lights: two D16 maps, one shadowed lighting variant plus the depth program, and the
+    // lighting pass's depth pre-pass, which the sample pass takes (ModuleHost::viewDepth).
     for (const char* name : {"sun", "moon"}) {
         const auto light = scene.create(name);
         scene.entity(light).light = engine::LightComponent{};
@@ -403,7 +404,7 @@ TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     engine.renderFrame(scene, camera, target);
     EXPECT_EQ(module.stats().shadowMaps, 2);
     EXPECT_EQ(module.stats().bytes, 2u * 128u * 128u * 2u);
-    EXPECT_EQ(engine.programs().compileCount(), 4u);
+    EXPECT_EQ(engine.programs().compileCount(), 5u);
     EXPECT_EQ(module.lightProjection(0), std::nullopt); // the lamp casts no shadow
     EXPECT_TRUE(module.lightProjection(1).has_value());
 

@@ -38,6 +38,7 @@ struct Options {
     std::uint32_t chunkTriangles = engine::ChunkLimits{}.maxTriangles;
     bool culling = true;
     bool depthPrePass = false;
+    bool ownSampleDepth = false;
     bool drawHiddenFaces = false;
     bool drawShadowlessPlanes = false;
     bool tuneAllocator = true;
@@ -54,6 +55,8 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --chunk-triangles N  triangles per draw chunk, 1..16777216   [4096]
   --no-culling     draw chunks outside the view volume too
   --depth-prepass  lay down depth first, then shade with an EQUAL depth test
+  --own-sample-depth  the shadow module's sample pass draws the view's depth itself (by default it takes
+                   the lighting pass's depth pre-pass, which the lighting pass then shades against)
   --draw-hidden-faces  draw the faces closed meshes hide from the camera too (left out by default)
   --draw-shadowless-planes  draw flat casters that shadow nothing into the maps too (left out by default
                    where the technique only compares depths)
@@ -180,6 +183,8 @@ Options parse(int argc, char** argv) {
             options.culling = false;
         } else if (arg == "--depth-prepass") {
             options.depthPrePass = true;
+        } else if (arg == "--own-sample-depth") {
+            options.ownSampleDepth = true;
         } else if (arg == "--draw-hidden-faces") {
             options.drawHiddenFaces = true;
         } else if (arg == "--draw-shadowless-planes") {
@@ -247,6 +252,7 @@ int main(int argc, char** argv) {
         engine.renderer().chunkLimits.maxTriangles = options.chunkTriangles;
         engine.renderer().culling = options.culling;
         engine.renderer().depthPrePass = options.depthPrePass;
+        engine.renderer().shareViewDepth = !options.ownSampleDepth;
         engine.renderer().lightingHiddenFaces =
             options.drawHiddenFaces ? engine::HiddenFaces::Draw : engine::HiddenFaces::Skip;
         engine.renderer().leaveOutShadowlessChunks = !options.drawShadowlessPlanes;
@@ -302,6 +308,8 @@ int main(int argc, char** argv) {
                << "  \"chunkTriangles\": " << options.chunkTriangles << ",\n"
                << "  \"culling\": " << (options.culling ? "true" : "false") << ",\n"
                << "  \"depthPrePass\": " << (options.depthPrePass ? "true" : "false") << ",\n"
+               << "  \"ownSampleDepth\": " << (options.ownSampleDepth ? "true" : "false") << ",\n"
+               << "  \"sharedViewDepth\": " << (stats.sharedViewDepth ? "true" : "false") << ",\n"
                << "  \"drawHiddenFaces\": " << (options.drawHiddenFaces ? "true" : "false") << ",\n"
                << "  \"drawShadowlessPlanes\": " << (options.drawShadowlessPlanes ? "true" : "false") << ",\n"
                << "  \"allocatorTuned\": " << (context.allocatorTuned() ? "true" : "false") << ",\n"

@@ -58,6 +58,7 @@ private:
     GLuint reserveTextureUnit() override;
     DrawnMeshes drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, const MeshPass& pass,
                            const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) override;
+    GLuint viewDepth(const FrameContext& frame) override { return renderer_.viewDepth(frame); }
     void
     forEachMeshBounds(const Scene& scene,
                       const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) override;

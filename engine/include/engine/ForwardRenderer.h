@@ -6,6 +6,8 @@
 #include <engine/Module.h>
 #include <engine/ProgramCache.h>
 #include <engine/gl/Buffer.h>
+#include <engine/gl/Framebuffer.h>
+#include <engine/gl/Texture.h>
 #include <engine/gl/VertexArray.h>
 
 #include <array>
@@ -14,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 
 namespace engine {
 
@@ -28,6 +31,9 @@ struct FrameStats {
     /// Flat chunks a shadow pass left out because they shadow nothing (MeshPass::castersFor); 0 for the
     /// lighting pass.
     std::size_t shadowlessChunks = 0;
+    /// Whether the lighting pass shaded against the view depth a module asked for this frame
+    /// (ForwardRenderer::viewDepth), copied into the target, instead of drawing depth itself.
+    bool sharedViewDepth = false;
     /// Milliseconds of the modules' pre-passes (e.g. shadow maps) and of the lighting pass; negative unless
     /// Engine::setPassTiming enabled timing (the method is Engine::passTiming()).
     double prePassMilliseconds = -1.0;
@@ -75,8 +81,17 @@ public:
                            const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit);
 
     /// @brief Clears `frame.target` and draws every mesh lit, letting `modules` choose variants and bind
-    /// their resources per draw.
+    /// their resources per draw. Where a module asked for the frame's viewDepth, the lighting pass copies
+    /// that depth into the target and shades with an EQUAL test, as after its own depth pre-pass.
     FrameStats lightingPass(const FrameContext& frame, std::span<Module* const> modules);
+
+    /// @brief The depth of `frame`'s view as the lighting pass sees it (ModuleHost::viewDepth): on the first
+    /// call of a frame, draws the lighting pass's depth pre-pass into a texture of the target's size and
+    /// depth format, which the lighting pass then copies in instead of drawing depth again. Returns that
+    /// texture, or 0 with nothing drawn when shareViewDepth is off or the target's depth buffer cannot take
+    /// an exact copy (none, multisampled, or a format no texture matches or llvmpipe does not copy exactly).
+    /// Leaves the target and its viewport bound.
+    GLuint viewDepth(const FrameContext& frame);
 
     /// @brief GPU bytes of the vertex and index buffers of the meshes held (uploaded and still referenced).
     [[nodiscard]] std::size_t meshBytes() const;
@@ -100,6 +115,10 @@ public:
     /// runs once per visible pixel. Pays when overdraw is high and lighting costs more than a second
     /// geometry pass (docs/RESULTS.md). Default false.
     bool depthPrePass = false;
+    /// Hand modules that ask for the view's depth (viewDepth) the lighting pass's own depth pre-pass, so the
+    /// view is drawn in depth once a frame and shaded once per pixel. Default true; false makes them draw
+    /// their own, to compare.
+    bool shareViewDepth = true;
     /// What the lighting pass does with the faces of closed parts that their other faces hide from the camera
     /// (HiddenFaces). Default Skip: the same image at about half a closed mesh's triangles.
     HiddenFaces lightingHiddenFaces = HiddenFaces::Skip;
@@ -124,8 +143,13 @@ private:
     const GpuMesh& upload(CachedMesh& entry, const MeshData& mesh);
     /// The flat chunks of `scene`'s meshes that shadow nothing from `light`, in address order.
     std::vector<const MeshChunk*> shadowlessChunks(const Scene& scene, const glm::vec4& light);
-    void drawLit(const FrameContext& frame, std::span<Module* const> modules, bool depthOnly,
-                 FrameStats& stats);
+    /// Draws every mesh's depth with the depth pre-pass program, as the lighting pass would place it.
+    void drawDepth(const FrameContext& frame);
+    void drawLit(const FrameContext& frame, std::span<Module* const> modules, FrameStats& stats);
+    /// Copies viewDepth's depth into `target` within its scissor box, if the scissor test is on.
+    void copyViewDepth(const FrameTarget& target) const;
+    /// Whether viewDepth drew `frame`'s depth and the lighting pass has not used it yet.
+    [[nodiscard]] bool holdsViewDepthOf(const FrameContext& frame) const;
 
     ProgramCache& programs_;
     ShaderVariantKey flatNormalsFlag_;
@@ -135,6 +159,11 @@ private:
     ShaderVariantKey lightCountBits_ = 0; // the frame's light count in the GS_LIGHT_COUNT_BIT flags
     std::array<ShaderVariantKey, 4> lightCountFlags_{};
     gl::Buffer frameBlock_;
+    // viewDepth's texture and framebuffer, and the frame (index and target) whose depth they hold until the
+    // lighting pass copies it.
+    std::optional<gl::Texture> viewDepthTexture_;
+    std::optional<gl::Framebuffer> viewDepthFramebuffer_;
+    std::optional<std::pair<std::uint64_t, FrameTarget>> viewDepthFrame_;
     bool sceneHasPositionalLights_ = false;
     // Keyed by the mesh pointer; an entry whose mesh died is released (or replaced when its address is
     // reused).

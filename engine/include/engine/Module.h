@@ -19,7 +19,7 @@ class Program;
 }
 
 /// @brief Bumped whenever Module, ModuleHost, FrameContext or DrawContext change layout or meaning.
-inline constexpr std::uint32_t kModuleAbiVersion = 4;
+inline constexpr std::uint32_t kModuleAbiVersion = 5;
 
 /// @brief Identifies the compiler and C++ library ABI; a module built with another one is refused,
 /// because C++ classes cross the module boundary.
@@ -72,6 +72,13 @@ public:
     virtual DrawnMeshes
     drawMeshes(const Scene& scene, const glm::mat4& cullViewProjection, const MeshPass& pass,
                const std::function<bool(EntityId, const glm::mat4& model)>& beforeDraw) = 0;
+    /// @brief The depth of `frame`'s view as its lighting pass will see it, for pre-passes that measure what
+    /// the camera sees (e.g. shadow maps fitted to the visible samples): a depth texture of the target's
+    /// size (window depths, rows from the bottom), drawn on the frame's first call by the lighting pass's own
+    /// depth pre-pass, which the lighting pass then reuses, so the view is drawn in depth once a frame. 0
+    /// when the target cannot take it (ForwardRenderer::viewDepth): the caller then draws its own. Leaves
+    /// the frame's framebuffer and viewport bound.
+    virtual GLuint viewDepth(const FrameContext& frame) = 0;
     /// @brief Calls `visit(entity, model, localBounds)` for every entity with a mesh; each mesh's bounds are
     /// computed once, so per-frame fits (e.g. a light's frustum) need not walk vertices.
     virtual void forEachMeshBounds(

@@ -107,6 +107,7 @@ ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
     stats.shadowMaps = static_cast<int>(slots_.size());
     stats.reusedMaps = reusedMaps_;
+    stats.sharedViewDepth = sharedViewDepth_;
     stats.casters = casters_;
     if (allocation_) {
         stats.bytes = allocation_->bytes();
@@ -268,6 +269,7 @@ engine::ShaderVariantKey ShadowModule::layoutKey(const std::vector<LightMapsBloc
 
 void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     casters_ = {};
+    sharedViewDepth_ = false;
     // Fitted here rather than in prepareFrame, so the pass timing includes the view's sample pass. World
     // bounds of every mesh (computed once per mesh by the host): receivers for the fit, and casters.
     MapInputs inputs{
@@ -289,7 +291,9 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         return;
     }
     drawnFrom_.reset(); // until this frame's maps are drawn
+    const std::uint64_t sampleDraws = samples_->draws();
     fitMaps(frame, inputs.fit, boxes, entities);
+    sharedViewDepth_ = samples_->draws() != sampleDraws && samples_->sharedDepth();
     if (!slots_.empty()) {
         drawMaps(frame);
     }

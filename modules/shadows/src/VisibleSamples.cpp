@@ -57,7 +57,7 @@ VisibleSamples::reduce(const engine::gl::Program& program) {
     program.set("uSize", size_);
     program.set("uTexelToLight", texelToLight_);
     glUniform4fv(program.uniformLocation("uTexelToViewDepth"), 1, glm::value_ptr(texelToViewDepth_));
-    glBindTextureUnit(0, depth_->id());
+    glBindTextureUnit(0, depthTexture());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bounds_->id());
     // 8x8 invocations a group, each reducing a 16x16 block of texels (samples.comp's GS_BLOCK).
     constexpr int kGroupTexels = 8 * 16;
@@ -70,9 +70,16 @@ VisibleSamples::reduce(const engine::gl::Program& program) {
 }
 
 void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit) {
-    const glm::ivec2 size = glm::max(frame.target.size, glm::ivec2(1));
-    if (!depth_ || size != size_) {
-        size_ = size;
+    ++draws_;
+    // The camera's own view is the one the lighting pass draws: take its depth pre-pass, drawn once for both.
+    sharedDepth_ = fit == FitView{frame.view, frame.projection} ? host.viewDepth(frame) : 0;
+    if (sharedDepth_ != 0) {
+        size_ = frame.target.size;
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        return;
+    }
+    size_ = glm::max(frame.target.size, glm::ivec2(1));
+    if (!depth_ || depth_->size() != size_) {
         depth_.emplace(GL_DEPTH_COMPONENT32F, size_);
         depth_->setFilter(GL_NEAREST, GL_NEAREST);
         framebuffer_.emplace("shadows: visible samples");
@@ -168,8 +175,8 @@ void VisibleSamples::readSlices(const std::array<std::uint32_t, kBoundsWords>& w
 
 std::vector<float> VisibleSamples::readDepth() const {
     std::vector<float> depth(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
-    if (depth_) {
-        glGetTextureImage(depth_->id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+    if (depthTexture() != 0) {
+        glGetTextureImage(depthTexture(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                           static_cast<GLsizei>(depth.size() * sizeof(float)), depth.data());
     }
     return depth;

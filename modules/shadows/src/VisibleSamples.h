@@ -17,12 +17,13 @@
 
 namespace shadows {
 
-/// @brief What the camera sees, for Sample Distribution Shadow Maps: a depth-only pass of the view at the
-/// frame's size, reduced on the GPU (shaders/shadows/samples.comp) to the visible samples' view-depth range
-/// and the light-space box of the samples in each candidate cascade slice. Drawn and read back within the
-/// frame, before the shadow maps: no latency, so a camera cut fits the new view at once. The reduction is
-/// the larger part of the sample pass's cost on a software rasteriser, and the cascades' nine slices most of
-/// it, so they are measured only when asked for.
+/// @brief What the camera sees, for Sample Distribution Shadow Maps: the view's depth at the frame's size
+/// (the lighting pass's depth pre-pass where the host shares it, else a depth-only pass of its own), reduced
+/// on the GPU (shaders/shadows/samples.comp) to the visible samples' view-depth range and the light-space box
+/// of the samples in each candidate cascade slice. Drawn and read back within the frame, before the shadow
+/// maps: no latency, so a camera cut fits the new view at once. The reduction is the larger part of the
+/// sample pass's cost on a software rasteriser, and the cascades' nine slices most of it, so they are
+/// measured only when asked for.
 class VisibleSamples {
 public:
     /// @brief The reduction of one frame.
@@ -48,10 +49,19 @@ public:
     void measureCascadeSlices(engine::ModuleHost& host, Bounds& bounds);
 
     /// @brief Draws the view of `fit` over `frame.scene` into the sample depth image only (what measure does
-    /// first; virtual maps mark their pages from it). Leaves the frame's framebuffer and viewport bound.
+    /// first; virtual maps mark their pages from it). When `fit` is the frame's own view, takes the lighting
+    /// pass's depth pre-pass instead (ModuleHost::viewDepth) where the host offers it. Leaves the frame's
+    /// framebuffer and viewport bound.
     void draw(engine::ModuleHost& host, const engine::FrameContext& frame, const FitView& fit);
-    /// @brief The sample depth image (GL_DEPTH_COMPONENT32F, the frame's size), 0 before the first draw.
-    [[nodiscard]] GLuint depthTexture() const { return depth_ ? depth_->id() : 0; }
+    /// @brief The sample depth image of the last draw (the frame's size): the host's view depth, or this
+    /// pass's own (GL_DEPTH_COMPONENT32F); 0 before the first draw.
+    [[nodiscard]] GLuint depthTexture() const {
+        return sharedDepth_ != 0 ? sharedDepth_ : depth_ ? depth_->id() : 0;
+    }
+    /// @brief Whether the last draw took the host's view depth rather than drawing its own.
+    [[nodiscard]] bool sharedDepth() const { return sharedDepth_ != 0; }
+    /// @brief Draws so far (each measure draws once), so a caller can tell whether a step drew.
+    [[nodiscard]] std::uint64_t draws() const { return draws_; }
 
     /// @brief The sample depth image of the last measure (window depths, rows from the bottom), for tests
     /// of the reduction against its CPU mirror.
@@ -72,6 +82,9 @@ private:
                            Bounds& bounds);
 
     glm::ivec2 size_{0};
+    // The host's view depth the last draw took, 0 when it drew its own into depth_.
+    GLuint sharedDepth_ = 0;
+    std::uint64_t draws_ = 0;
     std::optional<engine::gl::Texture> depth_;
     std::optional<engine::gl::Framebuffer> framebuffer_;
     std::optional<engine::gl::Buffer> bounds_;

@@ -46,6 +46,10 @@ struct ShadowStats {
     /// Whether the last frame kept the maps of the frame before, nothing they are drawn from having changed
     /// (ShadowSettings::reuseUnchangedMaps): it drew no map and ran no sample pass.
     bool reusedMaps = false;
+    /// Whether the last frame's sample pass (the view's depth, to fit maps or mark pages) took the lighting
+    /// pass's depth pre-pass (engine::ModuleHost::viewDepth) instead of drawing the view itself; false when
+    /// it ran none.
+    bool sharedViewDepth = false;
     /// Whether the last frame's lights read virtual maps (ShadowSettings::mapAllocation).
     bool virtualMaps = false;
     /// The virtual maps' page counters in the last frame (zero without virtual maps).
@@ -161,6 +165,7 @@ private:
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds
     std::unique_ptr<MapInputs> drawnFrom_;          // what the fitted maps in place were drawn from
     bool reusedMaps_ = false;                       // this frame kept them
+    bool sharedViewDepth_ = false;                  // this frame's sample pass took the view depth
     engine::DrawnMeshes casters_;                   // what this frame's caster pass drew
     std::uint64_t frameIndex_ = 0;
     bool dirty_ = true;
