@@ -12,27 +12,6 @@
 
 using namespace engine;
 
-TEST(WindowGLTest, RendersLitCubeIntoTheWindow) {
-    WindowContext window("WindowGLTest", {64, 64});
-    const glm::ivec2 size = window.framebufferSize();
-    ASSERT_GT(size.x, 0);
-    LitCubeScene fixture({0.5f, 0.25f, 0.125f});
-    fixture.addDirectionalLight(0.0f, 1.0f);
-    Engine engine;
-    engine.renderer().environment.ambient = glm::vec3(0.0f);
-    engine.renderFrame(fixture.scene, fixture.camera, FrameTarget{0, size});
-    glFinish();
-    std::uint8_t pixel[4] = {};
-    glReadBuffer(GL_BACK);
-    glReadPixels(size.x / 2, size.y / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-    // The window's framebuffer may or may not be sRGB-capable: accept the linear or the encoded value.
-    const int encoded = srgbByte(0.5f);
-    const int linear = 128;
-    EXPECT_TRUE(std::abs(pixel[0] - encoded) <= 1 || std::abs(pixel[0] - linear) <= 1) << int(pixel[0]);
-    window.swapBuffers();
-    EXPECT_TRUE(window.pollEvents());
-}
-
 namespace {
 
 /// Asks for the view's depth in its pre-pass, as the shadow module's sample pass does.
@@ -47,7 +26,34 @@ private:
     ModuleHost* host_ = nullptr;
 };
 
+/// Draws the lit cube into the window with `engine` and checks the centre pixel, the cube's face.
+FrameStats expectLitCubeInWindow(Engine& engine, glm::ivec2 size) {
+    LitCubeScene fixture({0.5f, 0.25f, 0.125f});
+    fixture.addDirectionalLight(0.0f, 1.0f);
+    engine.renderer().environment.ambient = glm::vec3(0.0f);
+    const FrameStats stats = engine.renderFrame(fixture.scene, fixture.camera, FrameTarget{0, size});
+    glFinish();
+    std::uint8_t pixel[4] = {};
+    glReadBuffer(GL_BACK);
+    glReadPixels(size.x / 2, size.y / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    // The window's framebuffer may or may not be sRGB-capable: accept the linear or the encoded value.
+    const int encoded = srgbByte(0.5f);
+    const int linear = 128;
+    EXPECT_TRUE(std::abs(pixel[0] - encoded) <= 1 || std::abs(pixel[0] - linear) <= 1) << int(pixel[0]);
+    return stats;
+}
+
 } // namespace
+
+TEST(WindowGLTest, RendersLitCubeIntoTheWindow) {
+    WindowContext window("WindowGLTest", {64, 64});
+    const glm::ivec2 size = window.framebufferSize();
+    ASSERT_GT(size.x, 0);
+    Engine engine;
+    expectLitCubeInWindow(engine, size);
+    window.swapBuffers();
+    EXPECT_TRUE(window.pollEvents());
+}
 
 // A module asking for the view depth of a frame drawn into the window: the default framebuffer takes a copy
 // where its format copies exactly (not GLFW's usual packed 24-bit depth and 8-bit stencil on llvmpipe), and
@@ -56,20 +62,9 @@ TEST(WindowGLTest, ViewDepthAskedForKeepsTheWindowsImage) {
     WindowContext window("WindowGLTest", {64, 64});
     const glm::ivec2 size = window.framebufferSize();
     ASSERT_GT(size.x, 0);
-    LitCubeScene fixture({0.5f, 0.25f, 0.125f});
-    fixture.addDirectionalLight(0.0f, 1.0f);
     Engine engine;
-    engine.renderer().environment.ambient = glm::vec3(0.0f);
     auto& asker = static_cast<ViewDepthAsker&>(engine.addModule(std::make_unique<ViewDepthAsker>()));
-    const FrameStats stats = engine.renderFrame(fixture.scene, fixture.camera, FrameTarget{0, size});
-    glFinish();
-    EXPECT_EQ(stats.sharedViewDepth, asker.texture != 0u);
-    std::uint8_t pixel[4] = {};
-    glReadBuffer(GL_BACK);
-    glReadPixels(size.x / 2, size.y / 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-    const int encoded = srgbByte(0.5f);
-    const int linear = 128;
-    EXPECT_TRUE(std::abs(pixel[0] - encoded) <= 1 || std::abs(pixel[0] - linear) <= 1) << int(pixel[0]);
+    EXPECT_EQ(expectLitCubeInWindow(engine, size).sharedViewDepth, asker.texture != 0u);
 }
 
 TEST(WindowGLTest, NoDisplaySuggestsHeadless) {
