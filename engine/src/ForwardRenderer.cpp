@@ -376,10 +376,7 @@ GLuint ForwardRenderer::viewDepth(const FrameContext& frame) {
         viewDepthTexture_->size() != size) {
         viewDepthTexture_.emplace(format, size);
         viewDepthTexture_->setFilter(GL_NEAREST, GL_NEAREST);
-        viewDepthFramebuffer_.emplace("render: view depth");
-        viewDepthFramebuffer_->attach(GL_DEPTH_ATTACHMENT, *viewDepthTexture_);
-        viewDepthFramebuffer_->setDrawBuffers({GL_NONE});
-        viewDepthFramebuffer_->check();
+        viewDepthFramebuffer_.emplace("render: view depth", *viewDepthTexture_);
     }
     viewDepthFramebuffer_->bind();
     glViewport(0, 0, size.x, size.y);

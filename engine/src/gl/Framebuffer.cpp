@@ -17,6 +17,12 @@ Framebuffer::Framebuffer(std::string_view label) : object_(createFramebuffer()),
     glObjectLabel(GL_FRAMEBUFFER, object_.id(), static_cast<GLsizei>(label_.size()), label_.data());
 }
 
+Framebuffer::Framebuffer(std::string_view label, const Texture& depth) : Framebuffer(label) {
+    attach(GL_DEPTH_ATTACHMENT, depth);
+    setDrawBuffers({});
+    check();
+}
+
 void Framebuffer::attach(GLenum attachment, const Texture& texture, GLint level) {
     glNamedFramebufferTexture(object_.id(), attachment, texture.id(), level);
 }

@@ -82,10 +82,7 @@ void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& 
     if (!depth_ || depth_->size() != size_) {
         depth_.emplace(GL_DEPTH_COMPONENT32F, size_);
         depth_->setFilter(GL_NEAREST, GL_NEAREST);
-        framebuffer_.emplace("shadows: visible samples");
-        framebuffer_->attach(GL_DEPTH_ATTACHMENT, *depth_);
-        framebuffer_->setDrawBuffers({GL_NONE});
-        framebuffer_->check();
+        framebuffer_.emplace("shadows: visible samples", *depth_);
     }
 
     // What the lighting pass will see: every mesh, both faces, depth only (the shadow pass's program without

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 TEST(FramebufferGLTest, DepthOnlyAndColourTargetsAreComplete) {
     glTestContext();
     const engine::gl::Texture depth(GL_DEPTH_COMPONENT24, {32, 32});
@@ -31,6 +33,29 @@ TEST(FramebufferGLTest, DepthOnlyAndColourTargetsAreComplete) {
     EXPECT_EQ(texel[0], 255);
     EXPECT_EQ(texel[1], 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST(FramebufferGLTest, DepthOnlyConstructorAttachesTheDepthAndDrawsNoColour) {
+    glTestContext();
+    const engine::gl::Texture depth(GL_DEPTH_COMPONENT32F, {16, 8});
+    const engine::gl::Framebuffer framebuffer("depth target", depth);
+    GLint attached = 0;
+    glGetNamedFramebufferAttachmentParameteriv(framebuffer.id(), GL_DEPTH_ATTACHMENT,
+                                               GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &attached);
+    EXPECT_EQ(static_cast<GLuint>(attached), depth.id());
+    framebuffer.bind();
+    GLint drawBuffer = -1;
+    glGetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    EXPECT_EQ(drawBuffer, GL_NONE);
+    // A colour texture is no depth: the framebuffer is incomplete, and the error names it.
+    const engine::gl::Texture colour(GL_RGBA8, {16, 8});
+    try {
+        const engine::gl::Framebuffer wrong("not a depth target", colour);
+        FAIL() << "expected GlError";
+    } catch (const engine::GlError& error) {
+        EXPECT_NE(std::string(error.what()).find("not a depth target"), std::string::npos) << error.what();
+    }
 }
 
 TEST(FramebufferGLTest, IncompleteFramebufferIsAnErrorNamingIt) {

@@ -13,6 +13,8 @@ class Framebuffer {
 public:
     /// @brief Creates an empty framebuffer; `label` names it in KHR_debug messages and errors.
     explicit Framebuffer(std::string_view label);
+    /// @brief A complete framebuffer that draws depth only, into `depth`; throws GlError when incomplete.
+    Framebuffer(std::string_view label, const Texture& depth);
 
     void attach(GLenum attachment, const Texture& texture, GLint level = 0);
     /// @brief Attaches one layer of an array texture.
