@@ -378,14 +378,7 @@ GLuint ForwardRenderer::viewDepth(const FrameContext& frame) {
         viewDepthTexture_->setFilter(GL_NEAREST, GL_NEAREST);
         viewDepthFramebuffer_.emplace("render: view depth", *viewDepthTexture_);
     }
-    viewDepthFramebuffer_->bind();
-    glViewport(0, 0, size.x, size.y);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    viewDepthFramebuffer_->beginDepthPass(size);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameBlock_.id());
     drawDepth(frame);
     glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);

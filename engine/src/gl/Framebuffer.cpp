@@ -54,4 +54,15 @@ void Framebuffer::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, object_.id());
 }
 
+void Framebuffer::beginDepthPass(glm::ivec2 size) const {
+    bind();
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+}
+
 } // namespace engine::gl

@@ -90,14 +90,7 @@ void VisibleSamples::draw(engine::ModuleHost& host, const engine::FrameContext& 
     const glm::mat4 viewProjection = fit.projection * fit.view;
     const engine::gl::Program& program = host.programs().get(kSampleDepthProgram, 0);
     program.use();
-    framebuffer_->bind();
-    glViewport(0, 0, size_.x, size_.y);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    framebuffer_->beginDepthPass(size_);
     program.set("uLightViewProjection", viewProjection);
     // The faces closed parts hide from the camera are left out, as the lighting pass leaves them: the same
     // depth.

@@ -4,6 +4,8 @@
 #include <engine/gl/Texture.h>
 #include <engine/gl/TextureArray.h>
 
+#include <glm/vec2.hpp>
+
 #include <string_view>
 
 namespace engine::gl {
@@ -24,6 +26,9 @@ public:
     /// @brief Throws GlError naming the framebuffer when it is incomplete.
     void check() const;
     void bind() const;
+    /// @brief Binds it for a depth pass over `size`: the viewport, a LESS depth test that writes, no face
+    /// culling, and the depth cleared to 1.
+    void beginDepthPass(glm::ivec2 size) const;
 
     [[nodiscard]] GLuint id() const { return object_.id(); }
 
