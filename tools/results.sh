@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only real|virtual|soft|cost|sizing|still] [work folder, default out/results]
-# --only real runs steps 4 to 6 alone, --only virtual step 11 (with the osgShadow peer's VDSM rows it reads),
-# --only soft step 12, --only cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and
-# replaces only that step's section of docs/RESULTS.md ("Real models", "Virtual maps", "Soft shadows", "Cost
-# model", "Maps sized to the view", "A still view keeps its maps"), which then says so.
+# Usage: bash tools/results.sh [--only real|defaults|virtual|soft|cost|sizing|still] [work folder, default out/results]
+# --only real runs steps 4 to 6 alone, --only defaults steps 4 to 7 (the recommendation weighs the real models' frame
+# times), --only virtual step 11 (with the osgShadow peer's VDSM rows it reads), --only soft step 12, --only cost step
+# 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and replaces only those steps' sections of
+# docs/RESULTS.md ("Real models"; those and "Defaults" and "PCF over GSM against single-tap GSM"; "Virtual maps",
+# "Soft shadows", "Cost model", "Maps sized to the view", "A still view keeps its maps"), which then say so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        real | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'real', 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2; exit 2 ;;
+        real | defaults | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'real', 'defaults', 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2; exit 2 ;;
     esac
     shift 2
 fi
@@ -37,6 +38,20 @@ peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults,
         peer_as "$scene" "$technique" --technique "$technique"
     done
 }
+defaults_views() { # defaults_views OUT OPTION...: the Defaults views, accuracy only, 320x240, into OUT-own, -swept, -large
+    # Every content scene and real model under its own light, the terrain seen from 10 m above its ground, then the
+    # same scenes under a sweep of azimuths x elevations down to 1° above the horizon, then the generated apron (one
+    # mesh per object, and all in one mesh) under suns at 40, 15, 8 and 3 degrees.
+    local out=$1 views=(knob torus bowl thin-shell crease-cube grazing-plane spheres "${corpus[@]}")
+    shift
+    "$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") --scene terrain-low \
+        "$@" --out "$out-own"
+    "$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") \
+        --light-sweep 30,210:40,5,1 "$@" --out "$out-swept"
+    "$bench" --defaults --accuracy-only --size 320x240 --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 \
+        "$@" --out "$out-large"
+}
+
 real_models_steps() { # steps 4 to 6, the "Real models" section, which the full run and --only real run
     # 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
     #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
@@ -113,17 +128,9 @@ reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false,gra
 
 real_models_steps
 
-# 7. Defaults: every technique at its defaults on every content scene and real model, under the scene's own light
-#    and a sweep of azimuths x elevations down to 1° above the horizon; accuracy only (the Defaults table).
-#    The large outdoor views: the terrain seen from 10 m above its ground under its own sun, and the generated apron
-#    (one mesh per object, and all in one mesh) under suns at 40, 15, 8 and 3 degrees.
-views=(knob torus bowl thin-shell crease-cube grazing-plane spheres "${corpus[@]}")
-"$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") --scene terrain-low \
-    --out "$work/defaults-own"
-"$bench" --defaults --accuracy-only --size 320x240 $(printf -- '--scene %s ' "${views[@]}") \
-    --light-sweep 30,210:40,5,1 --out "$work/defaults-swept"
-"$bench" --defaults --accuracy-only --size 320x240 --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 \
-    --out "$work/defaults-large"
+# 7. Defaults: every technique at its defaults over the Defaults views (defaults_views), accuracy only (the Defaults
+#    table).
+defaults_views "$work/defaults"
 
 # 8. Every light. The 4 km outdoor scene under its sun: the default technique with 1-4 cascades and several
 #    split weights, timed, against the truth, and its shimmer while the view the maps are fitted to moves by
@@ -161,6 +168,9 @@ done
 
 elif [ "${only[1]}" = real ]; then
     real_models_steps
+elif [ "${only[1]}" = defaults ]; then
+    real_models_steps
+    defaults_views "$work/defaults"
 elif [ "${only[1]}" = virtual ]; then
     # The peer rows step 11 reads: VDSM on its scenes the peer has (step 4 runs these among the others).
     bash tools/corpus.sh
@@ -225,6 +235,9 @@ if [ "${only[1]:-sizing}" = sizing ]; then
     --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 7 \
     --config "full-2048:fittedTexelPixels=0" --config "texel-0.5:fittedTexelPixels=0.5" \
     --config "texel-1:fittedTexelPixels=1" --out "$work/sizing"
+#     The same targets over the Defaults views, accuracy only: which views each keeps within the floor.
+defaults_views "$work/sizing-floor" --techniques default --config "full-2048:fittedTexelPixels=0" \
+    --config "texel-0.5:fittedTexelPixels=0.5" --config "texel-1:fittedTexelPixels=1"
 fi
 
 if [ "${only[1]:-still}" = still ]; then

@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Writes docs/RESULTS.md and its plots from the results.json files of tools/results.sh's shadowbench runs.
 
-usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only real|virtual|soft|cost|sizing|still]
+usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only real|defaults|virtual|soft|cost|sizing|still]
 
 With --only real (virtual, soft, cost, sizing, still), only steps 4-6's (11's, 12's, 10's, 13's, 14's) section,
 "Real models" ("Virtual maps", "Soft shadows", "Cost model", "Maps sized to the view", "A still view keeps its
 maps") up to the next "## " section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says
-so; every other section stays as the last full run wrote it.
+so; every other section stays as the last full run wrote it. --only defaults regenerates steps 4-7's three: "Real
+models", "Defaults" and "PCF over GSM against single-tap GSM".
 """
 import itertools
 import json
@@ -23,7 +24,8 @@ from default_rule import edges_scored, map_mib, meets_floor, recommend, scored  
 import cost_model  # noqa: E402
 
 # The sections --only regenerates alone, by its option.
-PARTIAL_SECTIONS = {"real": "## Real models", "virtual": "## Virtual maps", "soft": "## Soft shadows", "cost": "## Cost model",
+PARTIAL_SECTIONS = {"real": "## Real models", "defaults": "## Defaults", "virtual": "## Virtual maps",
+                    "soft": "## Soft shadows", "cost": "## Cost model",
                     "sizing": "## Maps sized to the view", "still": "## A still view keeps its maps"}
 
 work, results_md, plot_folder = (pathlib.Path(a) for a in sys.argv[1:4])
@@ -902,9 +904,10 @@ def soft_section(soft, coarse, seams):
     out.append("\n".join(lines) + "\n")
 
 
-def sizing_section(sizing):
+def sizing_section(sizing, floor_views=None):
     """The default technique's directional map sized to the view at several targets, and at the full
-    resolution, per scene."""
+    resolution, per scene; with `floor_views` (the same targets over the Defaults views), which views each
+    keeps within the floor."""
     rows = [r for r in sizing["results"] if not r["peer"]]
     default = next(r for r in rows if not r["label"].startswith(("full-", "texel-")))
     resolution = default["settings"]["resolution"]
@@ -918,7 +921,8 @@ def sizing_section(sizing):
                f"medians of the shadow pass (the sample pass included) and of the whole frame, {sizing['timingMethod']}, "
                "all in one run; edges and m ≤ 1 as in \"Defaults\" (texel density from the map drawn). The default "
                "keeps the full map at this size wherever the Defaults sweep's low suns need it (docs/SHADOWS.md); "
-               "the coarser targets show what fill and memory the view would let go.\n")
+               "the coarser targets show what fill and memory the view would let go, and the table after it what "
+               "they lose in the Defaults views.\n")
     lines = ["| scene | configuration | map side | cascades | shadow pass ms | frame ms | edges true→rendered "
              "mean / p95 px | edges rendered→true mean / p95 px | m ≤ 1 | acne / leak | memory |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
@@ -930,6 +934,60 @@ def sizing_section(sizing):
                      f"{b['mean']:.2f} / {b['p95']:.1f} | {100 * density:.0f} % | "
                      f"{100 * r['acneRate']:.3f} / {100 * r['leakRate']:.3f} % | {r['shadowBytes'] / 2**20:.0f} MiB |")
     out.append("\n".join(lines) + "\n")
+    if floor_views:
+        sizing_floor(floor_views)
+
+
+SIZING_LOST_LISTED = 6  # views lost per target named in the table; the CSV holds them all
+
+
+def sizing_floor(views):
+    """Per sizing target over the Defaults views: the views meeting the floor, the map sides taken, and each view
+    the default meets and the target does not."""
+    rows = [r for r in views["results"] if not r["peer"]]
+    by_label = {}
+    for r in rows:
+        by_label.setdefault(r["label"], {})[r["scene"]] = r
+    default_label = next(label for label in by_label if not label.startswith(("full-", "texel-")))
+    default = by_label[default_label]
+    with open(plot_folder / "sizing-floor.csv", "w") as csv:
+        csv.write("scene,configuration,map_side,acne_rate,leak_rate,darkening,edge_true_to_rendered_mean,"
+                  "edge_true_to_rendered_p95,edge_rendered_to_true_mean,edge_rendered_to_true_p95,meets_floor\n")
+        for r in rows:
+            t, b = r["edges"]["trueToRendered"], r["edges"]["renderedToTrue"]
+            csv.write(f"{r['scene']},{r['label']},{r['mapResolution']},{r['acneRate']:.6f},{r['leakRate']:.6f},"
+                      f"{r['darkening']:.6f},{t['mean']:.3f},{t['p95']:.3f},{b['mean']:.3f},{b['p95']:.3f},"
+                      f"{int(meets_floor(r))}\n")
+    out.append(f"The same targets over the {len(default)} Defaults views ({views['width']}x{views['height']}, "
+               "accuracy only, the floor of \"Defaults\"): how many views each meets the floor in, the map sides it "
+               f"took (views in brackets), and the views the default meets the floor in and it does not (the first "
+               f"{SIZING_LOST_LISTED}; every row is in `docs/results/sizing-floor.csv`).\n")
+    lines = ["| configuration | views meeting the floor | map sides | views lost against the default |",
+             "| --- | --- | --- | --- |"]
+    for label, mine in by_label.items():
+        sides = {}
+        for r in mine.values():
+            sides[r["mapResolution"]] = sides.get(r["mapResolution"], 0) + 1
+        lost = [scene for scene, r in mine.items() if meets_floor(default[scene]) and not meets_floor(r)]
+        lost_text = "; ".join(
+            f"{scene} ({mine[scene]['mapResolution']}², default {default[scene]['mapResolution']}²: "
+            f"{miss_kind(mine[scene])}, edges {mine[scene]['edges']['trueToRendered']['mean']:.2f} / "
+            f"{mine[scene]['edges']['trueToRendered']['p95']:.1f} and "
+            f"{mine[scene]['edges']['renderedToTrue']['mean']:.2f} / {mine[scene]['edges']['renderedToTrue']['p95']:.1f} "
+            "px)" for scene in lost[:SIZING_LOST_LISTED]) if label != default_label else "–"
+        if len(lost) > SIZING_LOST_LISTED:
+            lost_text += f"; and {len(lost) - SIZING_LOST_LISTED} more"
+        lines.append(f"| {label} | {sum(meets_floor(r) for r in mine.values())} / {len(mine)} | "
+                     + ", ".join(f"{side}² ({n})" for side, n in sorted(sides.items(), reverse=True))
+                     + f" | {lost_text or 'none'} |")
+    out.append("\n".join(lines) + "\n")
+    out.append("Edges are given as true→rendered and rendered→true, mean / 95th percentile.\n")
+
+
+def load_views(prefix):
+    """The Defaults views' three runs (defaults_views in tools/results.sh: -own, -swept, -large) as one."""
+    own, swept, large = load(f"{prefix}-own"), load(f"{prefix}-swept"), load(f"{prefix}-large")
+    return {**own, "results": own["results"] + swept["results"] + large["results"]}
 
 
 def drawn_texels(r):
@@ -1026,6 +1084,19 @@ if partial == "real":
     real_models(real_meta, load("scaling"))
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, real_meta["renderer"], partial))
     sys.exit(0)
+if partial == "defaults":
+    # Three sections, each spliced in place of its previous text.
+    real_meta = load("real")
+    model_sections = []
+    own, swept = load("defaults-own"), load("defaults-swept")  # the apron's views are not of the real corpus
+    for heading, build in ((PARTIAL_SECTIONS["real"], lambda: real_models(real_meta, load("scaling"))),
+                           (PARTIAL_SECTIONS["defaults"], lambda: defaults_section(load_views("defaults"), real_meta)),
+                           ("## PCF over GSM against single-tap GSM",
+                            lambda: pcf_over_gsm_section({**own, "results": own["results"] + swept["results"]}))):
+        out.clear()
+        build()
+        results_md.write_text(splice(heading, out, real_meta["renderer"], partial))
+    sys.exit(0)
 if partial == "virtual":
     timed = load("virtual")
     virtual_section(timed, load("virtual-suns"))
@@ -1040,7 +1111,7 @@ if partial == "soft":
     sys.exit(0)
 if partial == "sizing":
     sizing = load("sizing")
-    sizing_section(sizing)
+    sizing_section(sizing, load_views("sizing-floor"))
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, sizing["renderer"], partial))
     sys.exit(0)
 if partial == "still":
@@ -1058,8 +1129,8 @@ if partial == "cost":
 reference_sections()
 model_sections = []
 real_meta = load("real")
-own, swept, large = load("defaults-own"), load("defaults-swept"), load("defaults-large")
-defaults_section({**own, "results": own["results"] + swept["results"] + large["results"]}, real_meta)
+defaults_section(load_views("defaults"), real_meta)
+own, swept = load("defaults-own"), load("defaults-swept")  # the apron's views are not of the real corpus
 pcf_over_gsm_section({**own, "results": own["results"] + swept["results"]})
 real_models(real_meta, load("scaling"))
 every_light_section(load("outdoor-cascades"), load("every-light"))
@@ -1073,7 +1144,7 @@ if (work / "virtual" / "results.json").exists():
 if (work / "soft" / "results.json").exists():
     soft_section(load("soft"), load("soft-coarse"), load("soft-seams"))
 if (work / "sizing" / "results.json").exists():
-    sizing_section(load("sizing"))
+    sizing_section(load("sizing"), load_views("sizing-floor"))
 if (work / "still" / "results.json").exists():
     still_section(load("still"))
 if (work / "cost-model" / "results.json").exists():
