@@ -54,13 +54,14 @@ defaults_views() { # defaults_views OUT OPTION...: the Defaults views, accuracy 
 
 real_models_steps() { # steps 4 to 6, the "Real models" section, which the full run and --only real run
     # 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
-    #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth.
+    #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth; our
+    #    techniques timed in turn over 3 rounds.
     bash tools/corpus.sh
     for model in "${corpus[@]}"; do
         peer "corpus/$model.glb" vdsm sm lispsm ssm
     done
-    "$bench" $(printf -- '--scene %s ' "${corpus[@]}") --taps 4 --resolutions 2048 --frames 5 --peer "$work/osg" \
-        --out "$work/real"
+    "$bench" $(printf -- '--scene %s ' "${corpus[@]}") --taps 4 --resolutions 2048 --frames 2 --rounds 3 \
+        --peer "$work/osg" --out "$work/real"
 
     # 5. Frame-time scaling from 10k to 1M triangles (generated hills): ours without shadows and with gsm, the peer
     #    without shadows and with ViewDependentShadowMap.
@@ -229,10 +230,10 @@ fi
 if [ "${only[1]:-sizing}" = sizing ]; then
 # 13. Maps sized to the view: the default technique with its directional map sized to what the view resolves
 #     (fittedTexelPixels: the default, half a pixel and a pixel) and at the full 2048² (fittedTexelPixels=0),
-#     timed, on content scenes and real models, 640x480.
+#     timed, on content scenes and real models, 640x480, the configurations alternated over 5 rounds.
 [ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
 "$bench" --scene knob --scene spheres --scene suzanne --scene fzk-haus --scene duck --scene cylinder-engine \
-    --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 7 \
+    --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 3 --rounds 5 \
     --config "full-2048:fittedTexelPixels=0" --config "texel-0.5:fittedTexelPixels=0.5" \
     --config "texel-1:fittedTexelPixels=1" --out "$work/sizing"
 #     The same targets over the Defaults views, accuracy only: which views each keeps within the floor.

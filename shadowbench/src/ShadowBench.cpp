@@ -37,8 +37,11 @@ std::vector<glm::vec4> renderFloat(engine::Engine& engine, const engine::Scene& 
 }
 
 PassTiming summarise(std::vector<double> samples) {
+    if (samples.empty()) {
+        return {};
+    }
     std::sort(samples.begin(), samples.end());
-    return {samples[samples.size() / 2], samples.front(), samples.back()};
+    return {samples[samples.size() / 2], samples.front(), samples.back(), static_cast<int>(samples.size())};
 }
 
 /// One whole frame's milliseconds: glFinish + steady clock around it, like gs-render.
@@ -238,20 +241,63 @@ std::unique_ptr<BenchScene> ShadowBench::prepare(const std::string& name, const 
     return std::make_unique<BenchScene>(name, std::move(loaded.scene), *camera, options_);
 }
 
+struct ShadowBench::ConfigEngine {
+    engine::Engine engine;
+    shadows::ShadowModule* module = nullptr;
+    std::unique_ptr<engine::RenderTarget> target;
+};
+
+std::vector<BenchResult> ShadowBench::run(const BenchScene& scene,
+                                          std::span<const BenchConfig> configs) const {
+    std::vector<BenchResult> results(configs.size());
+    if (!options_.timing) { // nothing to alternate: one engine at a time
+        for (std::size_t i = 0; i < configs.size(); ++i) {
+            finish(scene, configs[i], *start(scene, configs[i], results[i]), results[i]);
+        }
+        return results;
+    }
+    std::vector<std::unique_ptr<ConfigEngine>> engines;
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        engines.push_back(start(scene, configs[i], results[i]));
+    }
+    std::vector<FrameSamples> samples(configs.size());
+    for (int round = 0; round < std::max(options_.rounds, 1); ++round) {
+        for (std::size_t i = 0; i < configs.size(); ++i) {
+            sampleFrames(engines[i]->engine, scene, *engines[i]->target, samples[i]);
+        }
+    }
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        results[i].shadowPass = summarise(samples[i].shadow);
+        results[i].lightingPass = summarise(samples[i].lighting);
+        results[i].frame = summarise(samples[i].frame);
+    }
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        finish(scene, configs[i], *engines[i], results[i]);
+        engines[i].reset(); // its maps and meshes are not needed again
+    }
+    return results;
+}
+
 BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config) const {
-    BenchResult result;
+    return std::move(run(scene, std::span<const BenchConfig>(&config, 1)).front());
+}
+
+std::unique_ptr<ShadowBench::ConfigEngine>
+ShadowBench::start(const BenchScene& scene, const BenchConfig& config, BenchResult& result) const {
     result.scene = scene.name();
     result.config = config;
-    engine::Engine engine;
+    auto started = std::make_unique<ConfigEngine>();
     // Every timed frame draws its maps, as a moving view's do; the still view's frames are timed apart.
     shadows::ShadowSettings redrawing = config.settings;
     redrawing.reuseUnchangedMaps = false;
-    auto& module = static_cast<shadows::ShadowModule&>(
-        engine.addModule(std::make_unique<shadows::ShadowModule>(redrawing)));
+    started->module = &static_cast<shadows::ShadowModule&>(
+        started->engine.addModule(std::make_unique<shadows::ShadowModule>(redrawing)));
+    const shadows::ShadowModule& module = *started->module;
 
     // Timing: shaded frames, both passes, after a warm-up frame that compiles and uploads.
-    engine::RenderTarget shaded(options_.size);
-    engine.renderFrame(scene.scene_, scene.camera_, shaded);
+    started->target = std::make_unique<engine::RenderTarget>(options_.size);
+    engine::RenderTarget& shaded = *started->target;
+    started->engine.renderFrame(scene.scene_, scene.camera_, shaded);
     result.shadowBytes = module.stats().bytes;
     result.mapResolution = module.stats().mapResolution;
     result.casterTexels = module.stats().casterTexels;
@@ -259,15 +305,26 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     result.virtualMaps = module.stats().virtualMaps;
     if (result.virtualMaps) {
         result.coldPages = module.stats().pages;
-        engine.renderFrame(scene.scene_, scene.camera_, shaded);
+        started->engine.renderFrame(scene.scene_, scene.camera_, shaded);
         result.warmPages = module.stats().pages;
     }
-    std::filesystem::path folder = options_.imageFolder / scene.name();
+    const std::filesystem::path folder = options_.imageFolder / scene.name();
     result.shadedImage = folder / (config.label + ".png");
     result.shaded = shaded.readPixels();
     engine::writePng(result.shadedImage, result.shaded);
+    if (!options_.timing) {
+        result.frame = result.shadowPass = result.lightingPass = {-1.0, -1.0, -1.0};
+    }
+    return started;
+}
+
+void ShadowBench::finish(const BenchScene& scene, const BenchConfig& config, ConfigEngine& started,
+                         BenchResult& result) const {
+    engine::Engine& engine = started.engine;
+    shadows::ShadowModule& module = *started.module;
+    engine::RenderTarget& shaded = *started.target;
+    const std::filesystem::path folder = options_.imageFolder / scene.name();
     if (options_.timing) {
-        time(engine, scene, shaded, result);
         if (options_.costModel) {
             result.lightingOverhead = pairedLightingOverhead(engine, scene, shaded);
         }
@@ -277,8 +334,6 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
         engine.renderFrame(scene.scene_, scene.camera_, shaded); // draws the maps the still frames keep
         result.stillFrame = timeFrames(engine, scene.scene_, scene.camera_, shaded, options_.frames);
         result.stillFrameKeptMaps = module.stats().reusedMaps;
-    } else {
-        result.frame = result.shadowPass = result.lightingPass = {-1.0, -1.0, -1.0};
     }
 
     const Accuracy accuracy = measure(scene, config.settings);
@@ -310,7 +365,6 @@ BenchResult ShadowBench::run(const BenchScene& scene, const BenchConfig& config)
     if (options_.walkFrames > 0 && (options_.timing || result.virtualMaps)) { // else it would measure nothing
         measureWalk(scene, config.settings, result);
     }
-    return result;
 }
 
 void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSettings& settings,
@@ -371,24 +425,32 @@ PassTiming ShadowBench::pairedLightingOverhead(engine::Engine& shadowed, const B
 
 ShadowBench::PassTimes ShadowBench::passTimes(engine::Engine& engine, const BenchScene& scene,
                                               engine::RenderTarget& target) const {
-    engine.setPassTiming(method_);
-    std::vector<double> shadowTimes;
-    std::vector<double> lightingTimes;
-    for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
-        const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, target);
-        shadowTimes.push_back(stats.prePassMilliseconds);
-        lightingTimes.push_back(stats.lightingMilliseconds);
-    }
-    engine.setPassTiming(std::nullopt);
-    return {summarise(shadowTimes), summarise(lightingTimes)};
+    FrameSamples samples;
+    samplePasses(engine, scene, target, samples);
+    return {summarise(samples.shadow), summarise(samples.lighting)};
 }
 
-void ShadowBench::time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-                       BenchResult& result) const {
-    const PassTimes passes = passTimes(engine, scene, target);
-    result.frame = timeFrames(engine, scene.scene_, scene.camera_, target, options_.frames);
-    result.shadowPass = passes.shadow;
-    result.lightingPass = passes.lighting;
+void ShadowBench::samplePasses(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+                               FrameSamples& samples) const {
+    engine.setPassTiming(method_);
+    for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
+        const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, target);
+        samples.shadow.push_back(stats.prePassMilliseconds);
+        samples.lighting.push_back(stats.lightingMilliseconds);
+    }
+    engine.setPassTiming(std::nullopt);
+}
+
+void ShadowBench::sampleFrames(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+                               FrameSamples& samples) const {
+    // A warm-up frame: the configuration timed before this one left the caches holding its own data.
+    engine.renderFrame(scene.scene_, scene.camera_, target);
+    samplePasses(engine, scene, target, samples);
+    engine.renderFrame(scene.scene_, scene.camera_, target);
+    glFinish();
+    for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
+        samples.frame.push_back(timedFrame(engine, scene.scene_, scene.camera_, target));
+    }
 }
 
 Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const {
@@ -787,6 +849,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
     document["width"] = options.size.x;
     document["height"] = options.size.y;
     document["frames"] = options.frames;
+    document["rounds"] = options.rounds;
     document["band"] = {{"width", options.bandWidth}, {"unit", std::string(toString(options.bandUnit))}};
     document["shimmerFrames"] = options.shimmerFrames;
     document["pathFrames"] = options.pathFrames;
@@ -870,7 +933,11 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                           {"min", r.lightingOverhead->min},
                                                           {"max", r.lightingOverhead->max}})
                                         : nlohmann::json()},
-             {"frameMs", {{"median", r.frame.median}, {"min", r.frame.min}, {"max", r.frame.max}}},
+             {"frameMs",
+              {{"median", r.frame.median},
+               {"min", r.frame.min},
+               {"max", r.frame.max},
+               {"samples", r.frame.samples}}},
              {"stillFrameMs",
               {{"median", r.stillFrame.median}, {"min", r.stillFrame.min}, {"max", r.stillFrame.max}}},
              {"stillFrameKeptMaps", r.stillFrameKeptMaps},

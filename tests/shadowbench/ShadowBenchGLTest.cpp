@@ -349,6 +349,50 @@ TEST(WalkGLTest, TimesEveryConfigurationsWalkAndCountsVirtualPages) {
     EXPECT_LT(walking.walkFrame.median, 0.0); // accuracy-only runs time nothing
 }
 
+// run() over several configurations keeps every configuration's engine while it times them in turn: the
+// rounds must not let one engine's state leak into another's image or figures, and every round's frames
+// count.
+TEST(RunGLTest, TimesEveryConfigurationInAlternatedRoundsAndMeasuresEachAsAlone) {
+    const engine::HeadlessContext& context = glTestContext();
+    BenchOptions options;
+    options.size = {160, 120};
+    options.frames = 2;
+    options.rounds = 3;
+    options.imageFolder =
+        std::filesystem::temp_directory_path() / ("gs-run-rounds-" + std::to_string(getpid()));
+    const ShadowBench bench(context, options);
+    const auto scene = bench.prepare("knob", std::filesystem::path(CONTENT_DIR) / "scenes" / "knob.gltf");
+    std::vector<BenchConfig> configs(3);
+    configs[0].label = "slope-scaled-512";
+    configs[0].settings.resolution = 512;
+    configs[1].label = "pcf-1024";
+    configs[1].settings.technique = ShadowTechnique::Pcf;
+    configs[1].settings.resolution = 1024;
+    configs[2].label = "evsm";
+    configs[2].settings.technique = ShadowTechnique::Evsm;
+
+    const std::vector<BenchResult> together = bench.run(*scene, configs);
+    ASSERT_EQ(together.size(), configs.size());
+    for (std::size_t i = 0; i < configs.size(); ++i) {
+        SCOPED_TRACE(configs[i].label);
+        const BenchResult alone = bench.run(*scene, configs[i]);
+        EXPECT_EQ(together[i].config.label, configs[i].label);
+        EXPECT_EQ(together[i].shaded.pixels, alone.shaded.pixels);
+        EXPECT_EQ(together[i].metrics.acneRate, alone.metrics.acneRate);
+        EXPECT_EQ(together[i].metrics.edges.trueToRendered.mean, alone.metrics.edges.trueToRendered.mean);
+        EXPECT_EQ(together[i].mapResolution, alone.mapResolution);
+        for (const PassTiming& timing :
+             {together[i].frame, together[i].shadowPass, together[i].lightingPass}) {
+            EXPECT_EQ(timing.samples, options.frames * options.rounds);
+            EXPECT_GT(timing.min, 0.0);
+            EXPECT_LE(timing.min, timing.median);
+            EXPECT_LE(timing.median, timing.max);
+        }
+        EXPECT_EQ(alone.frame.samples, options.frames * options.rounds);
+    }
+    std::filesystem::remove_all(options.imageFolder);
+}
+
 TEST(PathShimmerGLTest, AFineSnappedMapBarelyFlickersAndACoarseOneFlickersMore) {
     const engine::HeadlessContext& context = glTestContext();
     BenchOptions options;

@@ -8,13 +8,15 @@ failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 "$bench" --scene knob --techniques hard,pcf-gsm-average --taps 2,3 --resolutions 256,512 --size 96x72 --frames 1 \
-    --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true,constantBiasTexels=0" \
+    --rounds 2 --config "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true,constantBiasTexels=0" \
     --out "$out" > "$out.log" 2>&1 || fail "sweep exited $?: $(cat "$out.log")"
 # hard: 2 resolutions; pcf-gsm-average: 2 taps x 2 resolutions; plus one --config = 7 rows.
 rows=$(($(wc -l < "$out/results.csv") - 1))
 [[ $rows -eq 7 ]] || fail "results.csv has $rows rows, expected 7"
 head -1 "$out/results.csv" | grep -q '^scene,label,technique' || fail "results.csv header"
 grep -q '"timingMethod"' "$out/results.json" || fail "results.json lacks the timing method"
+grep -q '"rounds": 2' "$out/results.json" || fail "results.json lacks the rounds"
+[[ $(grep -c '"samples": 2' "$out/results.json") -eq 7 ]] || fail "a frame time is not of 1 frame x 2 rounds"
 grep -q '^\[7/7\]' "$out.log" || fail "no progress lines"
 [[ -s $out/knob/side-by-side.png && -s $out/knob/rpb-d16-floor-classes.png && -s $out/knob/rpb-d16-floor-error.png ]] ||
     fail "images missing"
@@ -48,6 +50,8 @@ grep -q '"pathFrames": 2' "$out/path/results.json" || fail "results.json lacks p
 grep -q 'path shimmer' "$out.path.log" || fail "the progress line lacks the path shimmer"
 "$bench" --shimmer-path 0 --out "$out/x" > "$out.bad" 2>&1
 [[ $? -eq 2 ]] && grep -q -- "--shimmer-path: '0'" "$out.bad" || fail "--shimmer-path 0 not refused"
+"$bench" --rounds 0 --out "$out/x" > "$out.bad" 2>&1
+[[ $? -eq 2 ]] && grep -q -- "--rounds: '0'" "$out.bad" || fail "--rounds 0 not refused"
 
 "$bench" --techniques nonsense --out "$out/x" > "$out.bad" 2>&1
 [[ $? -eq 2 ]] && grep -q "unknown technique 'nonsense'" "$out.bad" || fail "unknown technique not refused"

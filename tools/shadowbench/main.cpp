@@ -33,7 +33,9 @@ constexpr const char* kUsage = R"(usage: gs-shadowbench [options]
   --config LABEL:SPEC   an extra configuration, SPEC = key=value,... of the settings JSON fields
                         (e.g. "rpb-d16-floor:technique=receiver-plane,depthFormat=d16,floorReceiverDepth=true")
   --size WxH            image size                                          [640x480]
-  --frames N            timed frames per configuration                      [5]
+  --frames N            timed frames per configuration and round            [5]
+  --rounds N            rounds of timed frames, every configuration of a scene in turn in each, so a
+                        drift of the machine's speed spreads over all of them  [1]
   --accuracy-only       measure accuracy only, no timing (times are -1)
   --cost-model          also measure, per scene, the unshadowed lighting pass and one fetch's cost in it
                         (a reference pass making 1-16 bilinear or comparison reads per fragment), to
@@ -178,6 +180,8 @@ Options parse(int argc, char** argv) {
             options.bench.size = cli::sizeIn("--size", value(), 16, 4096);
         } else if (arg == "--frames") {
             options.bench.frames = cli::integerIn("--frames", value(), 1, 1000);
+        } else if (arg == "--rounds") {
+            options.bench.rounds = cli::integerIn("--rounds", value(), 1, 100);
         } else if (arg == "--shimmer") {
             options.bench.shimmerFrames = cli::integerIn("--shimmer", value(), 1, 1000);
         } else if (arg == "--walk") {
@@ -365,17 +369,17 @@ int main(int argc, char** argv) {
                     shadowbench::classificationImage(options.bench.size, reference.classes, reference.truth));
             }
             std::vector<engine::Image> shaded;
-            for (const shadowbench::BenchConfig& config : configs) {
-                const auto started = std::chrono::steady_clock::now();
-                shadowbench::BenchResult result = bench.run(*scene, config);
-                const double seconds =
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            const auto started = std::chrono::steady_clock::now();
+            std::vector<shadowbench::BenchResult> runs = bench.run(*scene, configs);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+            for (shadowbench::BenchResult& result : runs) {
                 shaded.push_back(std::move(result.shaded));
                 results.push_back(std::move(result));
                 const shadowbench::ShadowMetrics& m = results.back().metrics;
                 std::cout << "[" << results.size() << "/" << total << "] " << scene->name() << " "
-                          << config.label << ": acne " << std::setprecision(3) << m.acneRate << ", leak "
-                          << m.leakRate << ", darkening " << m.darkening << ", edges "
+                          << results.back().config.label << ": acne " << std::setprecision(3) << m.acneRate
+                          << ", leak " << m.leakRate << ", darkening " << m.darkening << ", edges "
                           << m.edges.trueToRendered.mean << "/" << m.edges.renderedToTrue.mean << " px (p95 "
                           << m.edges.trueToRendered.percentile95 << "/" << m.edges.renderedToTrue.percentile95
                           << "), m<=1 " << m.density.atMostOnePixel << " (p99 " << m.density.percentile99
@@ -393,10 +397,11 @@ int main(int argc, char** argv) {
                           << "shadow " << results.back().shadowPass.median << " ms, lighting "
                           << results.back().lightingPass.median << " ms, frame "
                           << results.back().frame.median << " ms (still " << results.back().stillFrame.median
-                          << " ms); " << std::fixed << std::setprecision(1) << seconds << std::defaultfloat
-                          << " s\n"
-                          << std::flush;
+                          << " ms)\n";
             }
+            std::cout << scene->name() << ": " << runs.size() << " configurations in " << std::fixed
+                      << std::setprecision(1) << seconds << std::defaultfloat << " s\n"
+                      << std::flush;
             shadowbench::SceneCost cost = bench.measureCost(*scene);
             if (options.peerFolder) {
                 // The band's unit, our texel at each receiver at the peer's map size, measured once per size

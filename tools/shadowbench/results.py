@@ -267,6 +267,15 @@ def accuracy_summary(real):
             + (f" except {'; '.join(worse)}." if worse else "."))
 
 
+def timed_frames(run):
+    """How a run's frame medians were timed, in words: its frames, and its rounds where it alternated them."""
+    rounds = run.get("rounds", 1)
+    if rounds > 1:
+        return (f"{rounds} rounds of {run['frames']} frames, each scene's configurations timed in turn in every "
+                "round")
+    return f"{run['frames']} frames"
+
+
 def real_models(real, scaling):
     costs = {c["scene"]: c for c in real["scenes"]}
     out.append("## Real models\n")
@@ -274,8 +283,8 @@ def real_models(real, scaling):
                f"{real['width']}x{real['height']} with 2048² maps, every technique at its defaults (PCF families 4x4 "
                "taps) and every osgShadow technique of OpenSceneGraph "
                "3.6 (`tools/osgpeer`, same scene, camera and light, white diffuse, no ambient) against the same "
-               f"ray-traced truth. Frame times are whole frames, median of {real['frames']}, {real['timingMethod']}, "
-               f"both programs in the same run on {real['renderer']}; the ratio is to osgShadow's "
+               f"ray-traced truth. Frame times are whole frames, {real['timingMethod']}, both programs in the same run "
+               f"on {real['renderer']}: ours the median of {timed_frames(real)}, the peer's of its own run; the ratio is to osgShadow's "
                "ViewDependentShadowMap frame on the same model. Acne, leak and darkening are the rates defined above.\n")
     summary = ["| model | triangles | our draws | mesh memory | unshadowed: ours / osg | ratio | gsm / osg-vdsm frame | ratio "
                "| gsm acne, leak, darkening | osg-vdsm acne, leak, darkening |",
@@ -919,7 +928,7 @@ def sizing_section(sizing, floor_views=None):
                f"{default['settings']['fittedTexelPixels']:g} (rows named after the technique), half a pixel and a "
                f"pixel (`texel-` rows), against the full {resolution}² (`full-`, `fittedTexelPixels` 0). Times are "
                f"medians of the shadow pass (the sample pass included) and of the whole frame, {sizing['timingMethod']}, "
-               "all in one run; edges and m ≤ 1 as in \"Defaults\" (texel density from the map drawn). The default "
+               f"all in one run, over {timed_frames(sizing)}; edges and m ≤ 1 as in \"Defaults\" (texel density from the map drawn). The default "
                "keeps the full map at this size wherever the Defaults sweep's low suns need it (docs/SHADOWS.md); "
                "the coarser targets show what fill and memory the view would let go, and the table after it what "
                "they lose in the Defaults views.\n")

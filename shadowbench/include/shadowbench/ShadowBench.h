@@ -37,6 +37,8 @@ struct PassTiming {
     double median = 0.0;
     double min = 0.0;
     double max = 0.0;
+    /// How many timed frames (or rounds' differences) they are of; 0 when nothing was timed.
+    int samples = 0;
 };
 
 /// @brief Everything measured for one scene and configuration.
@@ -178,6 +180,10 @@ struct BenchOptions {
     glm::ivec2 size{640, 480};
     /// Timed frames after one warm-up frame. Default 5.
     int frames = 5;
+    /// Rounds of those frames: run(scene, configs) times every configuration in turn in each round, so a
+    /// drift of the machine's speed spreads over all of them, and summarises each configuration's frames of
+    /// every round. Default 1.
+    int rounds = 1;
     /// Whether run() times frames and passes; without, only accuracy is measured (times are -1). Default
     /// true.
     bool timing = true;
@@ -266,7 +272,11 @@ public:
     prepare(const std::string& name, const std::filesystem::path& path,
             const std::optional<engine::LightAngles>& light = {}) const;
 
-    /// @brief Measures one configuration on one scene and writes its images.
+    /// @brief Measures every configuration on one scene and writes their images, in their order. Their
+    /// engines are set up first and timed in BenchOptions::rounds alternated rounds; then each is measured
+    /// alone.
+    std::vector<BenchResult> run(const BenchScene& scene, std::span<const BenchConfig> configs) const;
+    /// @brief run() of one configuration.
     BenchResult run(const BenchScene& scene, const BenchConfig& config) const;
 
     /// @brief Accuracy of `settings` against the scene's ground truth (no timing, nothing written).
@@ -322,6 +332,30 @@ private:
         PassTiming shadow;
         PassTiming lighting;
     };
+    /// Milliseconds of each timed frame, over every round.
+    struct FrameSamples {
+        std::vector<double> shadow;
+        std::vector<double> lighting;
+        std::vector<double> frame;
+    };
+    /// A configuration's engine with its shadow module and the target it draws, kept while a scene's
+    /// configurations are timed in turn.
+    struct ConfigEngine;
+    /// The engine of `config` on `scene`, after a warm-up frame; fills the result's map statistics and shaded
+    /// image and writes it.
+    std::unique_ptr<ConfigEngine> start(const BenchScene& scene, const BenchConfig& config,
+                                        BenchResult& result) const;
+    /// What run() measures of a started configuration after its timed rounds: the still frame, the lighting
+    /// overhead, accuracy and the optional measurements.
+    void finish(const BenchScene& scene, const BenchConfig& config, ConfigEngine& started,
+                BenchResult& result) const;
+    /// BenchOptions::frames frames of pass times, appended.
+    void samplePasses(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+                      FrameSamples& samples) const;
+    /// A warm-up frame, BenchOptions::frames frames of pass times, then as many whole frames after another
+    /// warm-up frame, appended.
+    void sampleFrames(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
+                      FrameSamples& samples) const;
     /// The pre-pass and lighting-pass times of BenchOptions::frames frames of `engine` on `scene`.
     PassTimes passTimes(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target) const;
     /// BenchResult::lightingOverhead: `shadowed`'s lighting pass against a new unshadowed engine's,
@@ -330,9 +364,6 @@ private:
                                       engine::RenderTarget& target) const;
     /// Rounds of the cost model's alternated timings.
     static constexpr int kCostModelRounds = 5;
-    /// Pass and whole-frame times of `engine`, already warmed up on `scene`.
-    void time(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-              BenchResult& result) const;
     /// The cost model's figures of SceneCost: the unshadowed lighting pass and one fetch's cost.
     void measureFetchCost(const BenchScene& scene, SceneCost& cost) const;
 
