@@ -284,8 +284,8 @@ def real_models(real, scaling):
                "taps) and every osgShadow technique of OpenSceneGraph "
                "3.6 (`tools/osgpeer`, same scene, camera and light, white diffuse, no ambient) against the same "
                f"ray-traced truth. Frame times are whole frames, {real['timingMethod']}, both programs in the same run "
-               f"on {real['renderer']}: ours the median of {timed_frames(real)}, the peer's of its own run; the ratio is to osgShadow's "
-               "ViewDependentShadowMap frame on the same model. Acne, leak and darkening are the rates defined above.\n")
+               f"on {real['renderer']}: ours the median of {timed_frames(real)}, the peer's of its own run; the ratio "
+               "is to osgShadow's ViewDependentShadowMap frame on the same model. Acne, leak and darkening are the rates defined above.\n")
     summary = ["| model | triangles | our draws | mesh memory | unshadowed: ours / osg | ratio | gsm / osg-vdsm frame | ratio "
                "| gsm acne, leak, darkening | osg-vdsm acne, leak, darkening |",
                "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
@@ -928,8 +928,8 @@ def sizing_section(sizing, floor_views=None):
                f"{default['settings']['fittedTexelPixels']:g} (rows named after the technique), half a pixel and a "
                f"pixel (`texel-` rows), against the full {resolution}² (`full-`, `fittedTexelPixels` 0). Times are "
                f"medians of the shadow pass (the sample pass included) and of the whole frame, {sizing['timingMethod']}, "
-               f"all in one run, over {timed_frames(sizing)}; edges and m ≤ 1 as in \"Defaults\" (texel density from the map drawn). The default "
-               "keeps the full map at this size wherever the Defaults sweep's low suns need it (docs/SHADOWS.md); "
+               f"all in one run, over {timed_frames(sizing)}; edges and m ≤ 1 as in \"Defaults\" (texel density from "
+               "the map drawn). The default keeps the full map at this size wherever the Defaults sweep's low suns need it (docs/SHADOWS.md); "
                "the coarser targets show what fill and memory the view would let go, and the table after it what "
                "they lose in the Defaults views.\n")
     lines = ["| scene | configuration | map side | cascades | shadow pass ms | frame ms | edges true→rendered "
