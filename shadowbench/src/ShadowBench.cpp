@@ -36,14 +36,6 @@ std::vector<glm::vec4> renderFloat(engine::Engine& engine, const engine::Scene& 
     return pixels;
 }
 
-PassTiming summarise(std::vector<double> samples) {
-    if (samples.empty()) {
-        return {};
-    }
-    std::sort(samples.begin(), samples.end());
-    return {samples[samples.size() / 2], samples.front(), samples.back(), static_cast<int>(samples.size())};
-}
-
 /// One whole frame's milliseconds: glFinish + steady clock around it, like gs-render.
 double timedFrame(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
                   engine::RenderTarget& target) {
@@ -62,7 +54,7 @@ PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine
     for (int frame = 0; frame < std::max(frames, 1); ++frame) {
         times.push_back(timedFrame(engine, scene, camera, target));
     }
-    return summarise(times);
+    return summariseTimes(times);
 }
 
 /// The finest of `maps` holding `position` (orthographic: the map's texel; perspective: its texel scale times
@@ -116,6 +108,18 @@ nlohmann::json probeMapCosts(const std::vector<ProbeMapCost>& costs) {
 }
 
 } // namespace
+
+PassTiming summariseTimes(std::vector<double> samples) {
+    if (samples.empty()) {
+        return {};
+    }
+    std::sort(samples.begin(), samples.end());
+    const std::size_t n = samples.size();
+    // An even count's median is the mean of its middle two: the upper one alone would lean towards the slower
+    // frames, the whole of them where two frames are timed.
+    const double median = (samples[(n - 1) / 2] + samples[n / 2]) / 2.0;
+    return {median, samples.front(), samples.back(), static_cast<int>(n)};
+}
 
 // The eye distance times a pixel's angle for a perspective camera, the view height over the image's for an
 // orthographic one.
@@ -267,9 +271,9 @@ std::vector<BenchResult> ShadowBench::run(const BenchScene& scene,
         }
     }
     for (std::size_t i = 0; i < configs.size(); ++i) {
-        results[i].shadowPass = summarise(samples[i].shadow);
-        results[i].lightingPass = summarise(samples[i].lighting);
-        results[i].frame = summarise(samples[i].frame);
+        results[i].shadowPass = summariseTimes(samples[i].shadow);
+        results[i].lightingPass = summariseTimes(samples[i].lighting);
+        results[i].frame = summariseTimes(samples[i].frame);
     }
     for (std::size_t i = 0; i < configs.size(); ++i) {
         finish(scene, configs[i], *engines[i], results[i]);
@@ -402,7 +406,7 @@ void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSett
         }
     }
     if (options_.timing && !times.empty()) {
-        result.walkFrame = summarise(times);
+        result.walkFrame = summariseTimes(times);
     }
     if (result.virtualMaps) {
         result.walkTexelsPerFrame = sum / static_cast<double>(options_.walkFrames);
@@ -420,14 +424,14 @@ PassTiming ShadowBench::pairedLightingOverhead(engine::Engine& shadowed, const B
         const double base = passTimes(unshadowed, scene, target).lighting.min;
         differences.push_back(passTimes(shadowed, scene, target).lighting.min - base);
     }
-    return summarise(differences);
+    return summariseTimes(differences);
 }
 
 ShadowBench::PassTimes ShadowBench::passTimes(engine::Engine& engine, const BenchScene& scene,
                                               engine::RenderTarget& target) const {
     FrameSamples samples;
     samplePasses(engine, scene, target, samples);
-    return {summarise(samples.shadow), summarise(samples.lighting)};
+    return {summariseTimes(samples.shadow), summariseTimes(samples.lighting)};
 }
 
 void ShadowBench::samplePasses(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
@@ -630,22 +634,22 @@ void ShadowBench::measureFetchCost(const BenchScene& scene, SceneCost& cost) con
             otherMapOverheads[m].push_back(lightingPass(*otherMaps[m]).min - base.back());
         }
     }
-    cost.unshadowedLighting = summarise(base);
+    cost.unshadowedLighting = summariseTimes(base);
     std::vector<double> oneReadOverheads;
     for (std::size_t round = 0; round < base.size(); ++round) {
         oneReadOverheads.push_back(compareTimes[1][round] - base[round]);
     }
-    cost.oneCompareReadOverheadMs = summarise(oneReadOverheads).median;
+    cost.oneCompareReadOverheadMs = summariseTimes(oneReadOverheads).median;
     for (std::size_t m = 0; m < otherMaps.size(); ++m) {
         cost.oneCompareReadByMap.push_back(
-            {FetchProbe::kOtherMaps[m], summarise(otherMapOverheads[m]).median});
+            {FetchProbe::kOtherMaps[m], summariseTimes(otherMapOverheads[m]).median});
     }
     // Least squares over the counts: the slope is one fetch's cost, the intercept the probe's fixed code.
     const auto slope = [](const std::map<int, std::vector<double>>& times) {
         double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
         for (const auto& [fetches, samples] : times) {
             const double x = fetches;
-            const double y = summarise(samples).median;
+            const double y = summariseTimes(samples).median;
             n += 1.0;
             sx += x;
             sy += y;

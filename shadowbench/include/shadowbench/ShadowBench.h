@@ -41,6 +41,10 @@ struct PassTiming {
     int samples = 0;
 };
 
+/// @brief The median (of an even count, the mean of the middle two), least and greatest of `samples`, and
+/// their count; all zero for none.
+[[nodiscard]] PassTiming summariseTimes(std::vector<double> samples);
+
 /// @brief Everything measured for one scene and configuration.
 struct BenchResult {
     std::string scene;
