@@ -45,15 +45,21 @@ double timedFrame(engine::Engine& engine, const engine::Scene& scene, engine::En
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// Whole frames after one warm-up frame.
-PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
-                      engine::RenderTarget& target, int frames) {
+/// Whole frames after one warm-up frame, appended to `times`.
+void sampleWholeFrames(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
+                       engine::RenderTarget& target, int frames, std::vector<double>& times) {
     engine.renderFrame(scene, camera, target);
     glFinish();
-    std::vector<double> times;
     for (int frame = 0; frame < std::max(frames, 1); ++frame) {
         times.push_back(timedFrame(engine, scene, camera, target));
     }
+}
+
+/// Whole frames after one warm-up frame.
+PassTiming timeFrames(engine::Engine& engine, const engine::Scene& scene, engine::EntityId camera,
+                      engine::RenderTarget& target, int frames) {
+    std::vector<double> times;
+    sampleWholeFrames(engine, scene, camera, target, frames, times);
     return summariseTimes(times);
 }
 
@@ -450,11 +456,7 @@ void ShadowBench::sampleFrames(engine::Engine& engine, const BenchScene& scene, 
     // A warm-up frame: the configuration timed before this one left the caches holding its own data.
     engine.renderFrame(scene.scene_, scene.camera_, target);
     samplePasses(engine, scene, target, samples);
-    engine.renderFrame(scene.scene_, scene.camera_, target);
-    glFinish();
-    for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
-        samples.frame.push_back(timedFrame(engine, scene.scene_, scene.camera_, target));
-    }
+    sampleWholeFrames(engine, scene.scene_, scene.camera_, target, options_.frames, samples.frame);
 }
 
 Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const {
