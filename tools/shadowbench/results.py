@@ -999,6 +999,13 @@ def load_views(prefix):
     return {**own, "results": own["results"] + swept["results"] + large["results"]}
 
 
+def corpus_views():
+    """The Defaults views of the content scenes and real models: -own and -swept (the apron's, -large, are not of
+    the real corpus)."""
+    own, swept = load("defaults-own"), load("defaults-swept")
+    return {**own, "results": own["results"] + swept["results"]}
+
+
 def drawn_texels(r):
     """The fraction of its maps' texels a result's casters were drawn into (ShadowStats::casterTexels)."""
     texels = r["mapResolution"] ** 2 * r["shadowMaps"]
@@ -1097,11 +1104,9 @@ if partial == "defaults":
     # Three sections, each spliced in place of its previous text.
     real_meta = load("real")
     model_sections = []
-    own, swept = load("defaults-own"), load("defaults-swept")  # the apron's views are not of the real corpus
     for heading, build in ((PARTIAL_SECTIONS["real"], lambda: real_models(real_meta, load("scaling"))),
                            (PARTIAL_SECTIONS["defaults"], lambda: defaults_section(load_views("defaults"), real_meta)),
-                           ("## PCF over GSM against single-tap GSM",
-                            lambda: pcf_over_gsm_section({**own, "results": own["results"] + swept["results"]}))):
+                           ("## PCF over GSM against single-tap GSM", lambda: pcf_over_gsm_section(corpus_views()))):
         out.clear()
         build()
         results_md.write_text(splice(heading, out, real_meta["renderer"], partial))
@@ -1139,8 +1144,7 @@ reference_sections()
 model_sections = []
 real_meta = load("real")
 defaults_section(load_views("defaults"), real_meta)
-own, swept = load("defaults-own"), load("defaults-swept")  # the apron's views are not of the real corpus
-pcf_over_gsm_section({**own, "results": own["results"] + swept["results"]})
+pcf_over_gsm_section(corpus_views())
 real_models(real_meta, load("scaling"))
 every_light_section(load("outdoor-cascades"), load("every-light"))
 fit_section(load("fit"))
