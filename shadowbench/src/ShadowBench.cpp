@@ -280,8 +280,6 @@ std::vector<BenchResult> ShadowBench::run(const BenchScene& scene,
         results[i].shadowPass = summariseTimes(samples[i].shadow);
         results[i].lightingPass = summariseTimes(samples[i].lighting);
         results[i].frame = summariseTimes(samples[i].frame);
-    }
-    for (std::size_t i = 0; i < configs.size(); ++i) {
         finish(scene, configs[i], *engines[i], results[i]);
         engines[i].reset(); // its maps and meshes are not needed again
     }
