@@ -59,7 +59,7 @@ VisibleSamples::reduce(const engine::gl::Program& program) {
     glUniform4fv(program.uniformLocation("uTexelToViewDepth"), 1, glm::value_ptr(texelToViewDepth_));
     glBindTextureUnit(0, depthTexture());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bounds_->id());
-    // 8x8 invocations a group, each reducing a 16x16 block of texels (samples.comp's GS_BLOCK).
+    // A group of 8x8 invocations covers 128x128 texels, 16x16 each (samples.comp's GS_GROUP_SIDE, GS_BLOCK).
     constexpr int kGroupTexels = 8 * 16;
     const glm::ivec2 groups = (size_ + glm::ivec2(kGroupTexels - 1)) / kGroupTexels;
     glDispatchCompute(static_cast<GLuint>(groups.x), static_cast<GLuint>(groups.y), 1);

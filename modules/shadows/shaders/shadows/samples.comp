@@ -55,11 +55,14 @@ int gsWordKind(int word) {
     return inSlice < 3 ? 0 : inSlice < 6 ? 1 : 2;
 }
 
-// Each invocation reduces a block of GS_BLOCK x GS_BLOCK texels in registers first: shared-memory atomics are
-// slow on a software rasteriser, and an invocation's set of them (sixty-three for the cascades' slices) costs
-// as much as many texels' arithmetic, so a block of 256 shares one set. VisibleSamples dispatches groups of
-// 8x8 invocations.
+// Each invocation reduces GS_BLOCK x GS_BLOCK texels in registers first: shared-memory atomics are slow on a
+// software rasteriser, and an invocation's set of them (sixty-three for the cascades' slices) costs as much as
+// many texels' arithmetic, so 256 texels share one set. A group of 8x8 invocations covers 8 * GS_BLOCK texels
+// square, its invocations interleaved (texel = group origin + invocation + 8 * step), so neighbouring
+// invocations, which a SIMD rasteriser runs side by side, fetch neighbouring texels. VisibleSamples dispatches
+// the groups.
 const int GS_BLOCK = 16;
+const int GS_GROUP_SIDE = 8;
 
 void main() {
     uint local = gl_LocalInvocationIndex;
@@ -77,10 +80,18 @@ void main() {
         high[s] = vec3(-3.0e38);
         count[s] = 0u;
     }
-    ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * GS_BLOCK;
-    for (int dy = 0; dy < GS_BLOCK; ++dy) {
-        for (int dx = 0; dx < GS_BLOCK; ++dx) {
-            ivec2 texel = origin + ivec2(dx, dy);
+    ivec2 origin = ivec2(gl_WorkGroupID.xy) * (GS_GROUP_SIDE * GS_BLOCK) + ivec2(gl_LocalInvocationID.xy);
+    // The window texel (x, y, depth, 1) enters both products linearly: a row's part (x = origin's, depth 0) is
+    // taken once, then each texel adds its x step and its depth, not a whole matrix product per texel.
+    vec4 lightPerX = uTexelToLight[0] * float(GS_GROUP_SIDE);
+    float viewDepthPerX = uTexelToViewDepth.x * float(GS_GROUP_SIDE);
+    for (int row = 0; row < GS_BLOCK; ++row) {
+        int y = origin.y + row * GS_GROUP_SIDE;
+        vec4 rowStart = vec4(vec2(origin.x, y), 0.0, 1.0);
+        vec4 rowLight = uTexelToLight * rowStart;
+        float rowViewDepth = dot(uTexelToViewDepth, rowStart);
+        for (int column = 0; column < GS_BLOCK; ++column) {
+            ivec2 texel = ivec2(origin.x + column * GS_GROUP_SIDE, y);
             if (any(greaterThanEqual(texel, uSize))) {
                 continue;
             }
@@ -88,11 +99,10 @@ void main() {
             if (!(depth < 1.0 && depth >= 0.0)) { // 1 is the cleared far plane: no surface
                 continue;
             }
-            vec4 window = vec4(vec2(texel), depth, 1.0);
-            vec4 light = uTexelToLight * window;
+            vec4 light = rowLight + float(column) * lightPerX + depth * uTexelToLight[2];
             float perW = 1.0 / light.w;
             vec3 point = light.xyz * perW;
-            float viewDepth = dot(uTexelToViewDepth, window) * perW;
+            float viewDepth = (rowViewDepth + float(column) * viewDepthPerX + depth * uTexelToViewDepth.z) * perW;
 #if defined(GS_SAMPLES_WHOLE)
             nearest = min(nearest, viewDepth);
             farthest = max(farthest, viewDepth);
