@@ -229,16 +229,18 @@ fi
 
 if [ "${only[1]:-sizing}" = sizing ]; then
 # 13. Maps sized to the view: the default technique with its directional map sized to what the view resolves
-#     (fittedTexelPixels: the default, half a pixel and a pixel) and at the full 2048² (fittedTexelPixels=0),
-#     timed, on content scenes and real models, 640x480, the configurations alternated over 5 rounds.
+#     (fittedTexelPixels: the default, half a pixel and a pixel), at the full 2048² (fittedTexelPixels=0), as
+#     virtual maps and in 16-bit depth, timed, on content scenes and real models, 640x480, the configurations
+#     alternated over 5 rounds.
 [ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
+sizing_alternatives=(--config "virtual:mapAllocation=virtual" --config "d16:depthFormat=d16")
 "$bench" --scene knob --scene spheres --scene suzanne --scene fzk-haus --scene duck --scene cylinder-engine \
     --scene terrain --scene apron-merged --techniques default --resolutions 2048 --size 640x480 --frames 3 --rounds 5 \
     --config "full-2048:fittedTexelPixels=0" --config "texel-0.5:fittedTexelPixels=0.5" \
-    --config "texel-1:fittedTexelPixels=1" --out "$work/sizing"
-#     The same targets over the Defaults views, accuracy only: which views each keeps within the floor.
+    --config "texel-1:fittedTexelPixels=1" "${sizing_alternatives[@]}" --out "$work/sizing"
+#     The same configurations over the Defaults views, accuracy only: which views each keeps within the floor.
 defaults_views "$work/sizing-floor" --techniques default --config "full-2048:fittedTexelPixels=0" \
-    --config "texel-0.5:fittedTexelPixels=0.5" --config "texel-1:fittedTexelPixels=1"
+    --config "texel-0.5:fittedTexelPixels=0.5" --config "texel-1:fittedTexelPixels=1" "${sizing_alternatives[@]}"
 fi
 
 if [ "${only[1]:-still}" = still ]; then

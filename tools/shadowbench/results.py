@@ -913,12 +913,25 @@ def soft_section(soft, coarse, seams):
     out.append("\n".join(lines) + "\n")
 
 
+# Labels of the sizing runs' configurations (tools/results.sh step 13); the default's rows are named otherwise.
+SIZING_CONFIGURATIONS = ("full-", "texel-", "virtual", "d16")
+
+
+# The rates a sizing configuration is compared on, view by view, against the default.
+RATES = ("acneRate", "leakRate", "darkening")
+
+
+def map_side(r):
+    """The map a row drew, as the sizing tables name it: its side, or pages for virtual maps (no whole map)."""
+    return f"{r['mapResolution']}²" if r["mapResolution"] > 0 else "pages"
+
+
 def sizing_section(sizing, floor_views=None):
     """The default technique's directional map sized to the view at several targets, and at the full
     resolution, per scene; with `floor_views` (the same targets over the Defaults views), which views each
     keeps within the floor."""
     rows = [r for r in sizing["results"] if not r["peer"]]
-    default = next(r for r in rows if not r["label"].startswith(("full-", "texel-")))
+    default = next(r for r in rows if not r["label"].startswith(SIZING_CONFIGURATIONS))
     resolution = default["settings"]["resolution"]
     out.append("## Maps sized to the view\n")
     out.append(f"The default `{default['settings']['technique']}`, {sizing['width']}x{sizing['height']}, its "
@@ -931,14 +944,17 @@ def sizing_section(sizing, floor_views=None):
                f"all in one run, over {timed_frames(sizing)}; edges and m ≤ 1 as in \"Defaults\" (texel density from "
                "the map drawn). The default keeps the full map at this size wherever the Defaults sweep's low suns need it (docs/SHADOWS.md); "
                "the coarser targets show what fill and memory the view would let go, and the table after it what "
-               "they lose in the Defaults views.\n")
+               "they lose in the Defaults views. Two other ways to the same floor at less cost, with the default's "
+               "settings otherwise: `virtual`, virtual maps (`mapAllocation` virtual: pages only where pixels ask, "
+               "\"Virtual maps\"), and `d16`, the map in 16-bit depth (`depthFormat` d16: half the memory and the "
+               "bytes each lookup reads).\n")
     lines = ["| scene | configuration | map side | cascades | shadow pass ms | frame ms | edges true→rendered "
              "mean / p95 px | edges rendered→true mean / p95 px | m ≤ 1 | acne / leak | memory |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in rows:
         t, b = r["edges"]["trueToRendered"], r["edges"]["renderedToTrue"]
         density = (r.get("density") or {}).get("atMostOnePixel", -1)
-        lines.append(f"| {r['scene']} | {r['label']} | {r['mapResolution']}² | {r['shadowMaps']} | "
+        lines.append(f"| {r['scene']} | {r['label']} | {map_side(r)} | {r['shadowMaps']} | "
                      f"{r['shadowPassMs']['median']:.1f} | {frame_ms(r):.1f} | {t['mean']:.2f} / {t['p95']:.1f} | "
                      f"{b['mean']:.2f} / {b['p95']:.1f} | {100 * density:.0f} % | "
                      f"{100 * r['acneRate']:.3f} / {100 * r['leakRate']:.3f} % | {r['shadowBytes'] / 2**20:.0f} MiB |")
@@ -957,7 +973,7 @@ def sizing_floor(views):
     by_label = {}
     for r in rows:
         by_label.setdefault(r["label"], {})[r["scene"]] = r
-    default_label = next(label for label in by_label if not label.startswith(("full-", "texel-")))
+    default_label = next(label for label in by_label if not label.startswith(SIZING_CONFIGURATIONS))
     default = by_label[default_label]
     with open(plot_folder / "sizing-floor.csv", "w") as csv:
         csv.write("scene,configuration,map_side,acne_rate,leak_rate,darkening,edge_true_to_rendered_mean,"
@@ -967,27 +983,36 @@ def sizing_floor(views):
             csv.write(f"{r['scene']},{r['label']},{r['mapResolution']},{r['acneRate']:.6f},{r['leakRate']:.6f},"
                       f"{r['darkening']:.6f},{t['mean']:.3f},{t['p95']:.3f},{b['mean']:.3f},{b['p95']:.3f},"
                       f"{int(meets_floor(r))}\n")
-    out.append(f"The same targets over the {len(default)} Defaults views ({views['width']}x{views['height']}, "
+    out.append(f"The same configurations over the {len(default)} Defaults views ({views['width']}x{views['height']}, "
                "accuracy only, the floor of \"Defaults\"): how many views each meets the floor in, the map sides it "
-               f"took (views in brackets), and the views the default meets the floor in and it does not (the first "
-               f"{SIZING_LOST_LISTED}; every row is in `docs/results/sizing-floor.csv`).\n")
-    lines = ["| configuration | views meeting the floor | map sides | views lost against the default |",
-             "| --- | --- | --- | --- |"]
+               "took (views in brackets), the views where its acne, leak or darkening is higher than the default's "
+               "and where lower, the views the default misses and it meets, and the views the default meets the "
+               f"floor in and it does not (the first {SIZING_LOST_LISTED}; every row is in "
+               "`docs/results/sizing-floor.csv`).\n")
+    lines = ["| configuration | views meeting the floor | map sides | rates higher / lower | views gained | "
+             "views lost against the default |",
+             "| --- | --- | --- | --- | --- | --- |"]
     for label, mine in by_label.items():
         sides = {}
         for r in mine.values():
-            sides[r["mapResolution"]] = sides.get(r["mapResolution"], 0) + 1
+            sides[r["mapResolution"]] = sides.get(r["mapResolution"], 0) + 1  # 0: pages
         lost = [scene for scene, r in mine.items() if meets_floor(default[scene]) and not meets_floor(r)]
         lost_text = "; ".join(
-            f"{scene} ({mine[scene]['mapResolution']}², default {default[scene]['mapResolution']}²: "
+            f"{scene} ({map_side(mine[scene])}, default {map_side(default[scene])}: "
             f"{miss_kind(mine[scene])}, edges {mine[scene]['edges']['trueToRendered']['mean']:.2f} / "
             f"{mine[scene]['edges']['trueToRendered']['p95']:.1f} and "
             f"{mine[scene]['edges']['renderedToTrue']['mean']:.2f} / {mine[scene]['edges']['renderedToTrue']['p95']:.1f} "
             "px)" for scene in lost[:SIZING_LOST_LISTED]) if label != default_label else "–"
         if len(lost) > SIZING_LOST_LISTED:
             lost_text += f"; and {len(lost) - SIZING_LOST_LISTED} more"
+        gained = [scene for scene, r in mine.items() if not meets_floor(default[scene]) and meets_floor(r)]
+        higher = sum(any(r[k] > default[scene][k] for k in RATES) for scene, r in mine.items())
+        lower = sum(any(r[k] < default[scene][k] for k in RATES) for scene, r in mine.items())
         lines.append(f"| {label} | {sum(meets_floor(r) for r in mine.values())} / {len(mine)} | "
-                     + ", ".join(f"{side}² ({n})" for side, n in sorted(sides.items(), reverse=True))
+                     + ", ".join(f"{f'{side}²' if side else 'pages'} ({n})"
+                                 for side, n in sorted(sides.items(), reverse=True))
+                     + (f" | {higher} / {lower} | {', '.join(gained) or 'none'}" if label != default_label
+                        else " | – | –")
                      + f" | {lost_text or 'none'} |")
     out.append("\n".join(lines) + "\n")
     out.append("Edges are given as true→rendered and rendered→true, mean / 95th percentile.\n")
