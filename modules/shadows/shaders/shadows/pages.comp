@@ -54,24 +54,24 @@ bool gsSurfaceAt(ivec2 texel, out vec3 position) {
     return true;
 }
 
-const int GS_BLOCK = 4;
-// An invocation's block of pixels with a border of one: each pixel's derivatives read its four neighbours, so
-// every position of the block and its border is reconstructed once, not once for each pixel that reads it.
-const int GS_SPAN = GS_BLOCK + 2;
-vec3 gsPositions[GS_SPAN * GS_SPAN];
-bool gsSurfaces[GS_SPAN * GS_SPAN];
+// The position at `texel` and 1 in w where the depth image holds a surface there, else w 0.
+vec4 gsSampleAt(ivec2 texel) {
+    vec3 position = vec3(0.0);
+    return gsSurfaceAt(texel, position) ? vec4(position, 1.0) : vec4(0.0);
+}
 
-// The screen derivative of the position at span index `centre` along `stride` (1: x, GS_SPAN: y): the shorter
-// one-sided difference, so a pixel beside a silhouette measures its own surface, not the jump to the one behind.
-bool gsDerivative(int centre, int stride, out vec3 derivative) {
-    bool hasForward = gsSurfaces[centre + stride];
-    bool hasBackward = gsSurfaces[centre - stride];
+// The screen derivative of the position at `centre` from its neighbours `behind` and `ahead` (left and right, or
+// below and above): the shorter one-sided difference, so a pixel beside a silhouette measures its own surface,
+// not the jump to the one behind.
+bool gsDerivative(vec4 behind, vec4 centre, vec4 ahead, out vec3 derivative) {
+    bool hasForward = ahead.w > 0.0;
+    bool hasBackward = behind.w > 0.0;
     if (!hasForward && !hasBackward) {
         return false;
     }
-    vec3 ahead = gsPositions[centre + stride] - gsPositions[centre];
-    vec3 behind = gsPositions[centre] - gsPositions[centre - stride];
-    derivative = !hasBackward || (hasForward && dot(ahead, ahead) <= dot(behind, behind)) ? ahead : behind;
+    vec3 forward = ahead.xyz - centre.xyz;
+    vec3 backward = centre.xyz - behind.xyz;
+    derivative = !hasBackward || (hasForward && dot(forward, forward) <= dot(backward, backward)) ? forward : backward;
     return true;
 }
 
@@ -130,58 +130,89 @@ void gsMarkPerspective(vec3 position, vec3 dPdx, vec3 dPdy, vec3 normal, float p
     }
 }
 
-void main() {
-    ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * GS_BLOCK;
-    for (int y = 0; y < GS_SPAN; ++y) {
-        for (int x = 0; x < GS_SPAN; ++x) {
-            int i = y * GS_SPAN + x;
-            bool corner = (x == 0 || x == GS_SPAN - 1) && (y == 0 || y == GS_SPAN - 1); // no pixel reads these
-            gsSurfaces[i] = !corner && gsSurfaceAt(origin + ivec2(x - 1, y - 1), gsPositions[i]);
-        }
+// Marks the pages the pixel at `centre` asks for, from its four neighbours (w: 1 where a surface is).
+void gsMarkPixel(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above) {
+    vec3 dPdx;
+    vec3 dPdy;
+    if (!(centre.w > 0.0) || !gsDerivative(left, centre, right, dPdx) || !gsDerivative(below, centre, above, dPdy)) {
+        return;
+    }
+    vec3 position = centre.xyz;
+    // The facet, turned towards the camera: lit where it faces the light too.
+    vec3 normal = cross(dPdx, dPdy);
+    normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
+    float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
+    if (uFaces > 0) {
+        gsMarkPerspective(position, dPdx, dPdy, normal, pixelSize);
+        return;
     }
     mat3 toLight = mat3(uWorldToLight);
-    for (int dy = 0; dy < GS_BLOCK; ++dy) {
-        for (int dx = 0; dx < GS_BLOCK; ++dx) {
-            int centre = (dy + 1) * GS_SPAN + dx + 1;
-            vec3 dPdx;
-            vec3 dPdy;
-            if (!gsSurfaces[centre] || !gsDerivative(centre, 1, dPdx) || !gsDerivative(centre, GS_SPAN, dPdy)) {
-                continue;
-            }
-            vec3 position = gsPositions[centre];
-            // The facet, turned towards the camera: lit where it faces the light too.
-            vec3 normal = cross(dPdx, dPdy);
-            normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
-            float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
-            if (uFaces > 0) {
-                gsMarkPerspective(position, dPdx, dPdy, normal, pixelSize);
-                continue;
-            }
-            bool lit = dot(normal, uToLight) > 0.0;
-            float unitFootprint = lit ? gsTexelFootprintPixels((toLight * dPdx).xy, (toLight * dPdy).xy) : 0.0;
-            // m grows with the texel: a texel uTexelPixels times as large spans uTexelPixels times the pixels.
-            int level = gsVirtualLevel(unitFootprint / uTexelPixels, pixelSize * uTexelPixels, uLevelBase,
-                                       GS_REQUEST_LEVELS) -
-                        uLevelBase;
-            vec2 light = (uWorldToLight * vec4(position, 1.0)).xy;
-            // The finest level at or above the one asked for whose window holds the lookup and its reach.
-            float windowTexels = float(uPageSize * uPagesPerSide);
-            for (; level < GS_REQUEST_LEVELS; ++level) {
-                // In floats: a clamped window origin of a level far too fine (ClipmapGeometry::windowOrigin) times
-                // the page size may not fit an int.
-                vec2 window = light * exp2(-float(uLevelBase + level)) - vec2(uWindowOrigin[level]) * float(uPageSize);
-                if (all(greaterThanEqual(window, vec2(uReach))) && all(lessThan(window, vec2(windowTexels - uReach)))) {
-                    ivec2 low;
-                    ivec2 high;
-                    gsVirtualPageSpan(window, uReach, float(uPageSize), uPagesPerSide, low, high);
-                    for (int y = low.y; y <= high.y; ++y) {
-                        for (int x = low.x; x <= high.x; ++x) {
-                            gsMark(level, ivec2(x, y));
-                        }
-                    }
-                    break;
+    bool lit = dot(normal, uToLight) > 0.0;
+    float unitFootprint = lit ? gsTexelFootprintPixels((toLight * dPdx).xy, (toLight * dPdy).xy) : 0.0;
+    // m grows with the texel: a texel uTexelPixels times as large spans uTexelPixels times the pixels.
+    int level = gsVirtualLevel(unitFootprint / uTexelPixels, pixelSize * uTexelPixels, uLevelBase,
+                               GS_REQUEST_LEVELS) -
+                uLevelBase;
+    vec2 light = (uWorldToLight * vec4(position, 1.0)).xy;
+    // The finest level at or above the one asked for whose window holds the lookup and its reach.
+    float windowTexels = float(uPageSize * uPagesPerSide);
+    for (; level < GS_REQUEST_LEVELS; ++level) {
+        // In floats: a clamped window origin of a level far too fine (ClipmapGeometry::windowOrigin) times
+        // the page size may not fit an int.
+        vec2 window = light * exp2(-float(uLevelBase + level)) - vec2(uWindowOrigin[level]) * float(uPageSize);
+        if (all(greaterThanEqual(window, vec2(uReach))) && all(lessThan(window, vec2(windowTexels - uReach)))) {
+            ivec2 low;
+            ivec2 high;
+            gsVirtualPageSpan(window, uReach, float(uPageSize), uPagesPerSide, low, high);
+            for (int y = low.y; y <= high.y; ++y) {
+                for (int x = low.x; x <= high.x; ++x) {
+                    gsMark(level, ivec2(x, y));
                 }
             }
+            break;
         }
+    }
+}
+
+// Each invocation marks a block of 4x4 pixels (neighbours mostly ask for the same page, so one atomic serves a run
+// of them), row by row, holding the rows below, at and above in registers: every position of the block and its
+// border is reconstructed once, not once for each pixel that reads it, and no array is indexed (a software
+// rasteriser keeps an invocation's indexed arrays in memory). VirtualShadowMaps dispatches groups of 8x8.
+void main() {
+    ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * 4;
+    // Columns -1 to 4 of the block: the row below the current one needs only columns 0-3.
+    vec4 below1 = gsSampleAt(origin + ivec2(0, -1));
+    vec4 below2 = gsSampleAt(origin + ivec2(1, -1));
+    vec4 below3 = gsSampleAt(origin + ivec2(2, -1));
+    vec4 below4 = gsSampleAt(origin + ivec2(3, -1));
+    vec4 at0 = gsSampleAt(origin + ivec2(-1, 0));
+    vec4 at1 = gsSampleAt(origin + ivec2(0, 0));
+    vec4 at2 = gsSampleAt(origin + ivec2(1, 0));
+    vec4 at3 = gsSampleAt(origin + ivec2(2, 0));
+    vec4 at4 = gsSampleAt(origin + ivec2(3, 0));
+    vec4 at5 = gsSampleAt(origin + ivec2(4, 0));
+    for (int dy = 0; dy < 4; ++dy) {
+        // The row above needs its ends only when it becomes the current row; the block's top border never does.
+        bool inside = dy < 3;
+        vec4 above0 = inside ? gsSampleAt(origin + ivec2(-1, dy + 1)) : vec4(0.0);
+        vec4 above1 = gsSampleAt(origin + ivec2(0, dy + 1));
+        vec4 above2 = gsSampleAt(origin + ivec2(1, dy + 1));
+        vec4 above3 = gsSampleAt(origin + ivec2(2, dy + 1));
+        vec4 above4 = gsSampleAt(origin + ivec2(3, dy + 1));
+        vec4 above5 = inside ? gsSampleAt(origin + ivec2(4, dy + 1)) : vec4(0.0);
+        gsMarkPixel(at1, at0, at2, below1, above1);
+        gsMarkPixel(at2, at1, at3, below2, above2);
+        gsMarkPixel(at3, at2, at4, below3, above3);
+        gsMarkPixel(at4, at3, at5, below4, above4);
+        below1 = at1;
+        below2 = at2;
+        below3 = at3;
+        below4 = at4;
+        at0 = above0;
+        at1 = above1;
+        at2 = above2;
+        at3 = above3;
+        at4 = above4;
+        at5 = above5;
     }
 }
