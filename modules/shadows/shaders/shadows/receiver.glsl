@@ -350,9 +350,18 @@ float gsShadowMapVisibilityAt(int slot, GsShadowFragment fragment, GsShadowProje
         }
 #endif
         int tilesPerLayer = gsVirtualPages.y * gsVirtualPages.y;
-        ivec2 cell = ivec2(tile % gsVirtualPages.y, (tile % tilesPerLayer) / gsVirtualPages.y);
-        vec2 atlasTexel = vec2(cell) * gsVirtualPage.y + gsVirtualPage.z + (window - vec2(page) * gsVirtualPage.x);
-        lookup.layer = tile / tilesPerLayer;
+        // The tile's layer, row and column by float division: x86 has no vector integer division, so a software
+        // rasteriser divides each lane's integers in turn. Exact: (n + 0.5) / d lies 0.5 / d or more from an
+        // integer, beyond the division's rounding while n < 2^23 (the largest pool, 4096 MiB of 32-texel pages,
+        // holds 2^20 tiles).
+        float layerTiles = float(tilesPerLayer);
+        float rowTiles = float(gsVirtualPages.y);
+        float layer = floor((float(tile) + 0.5) / layerTiles);
+        float inLayer = float(tile) - layer * layerTiles;
+        float row = floor((inLayer + 0.5) / rowTiles);
+        vec2 cell = vec2(inLayer - row * rowTiles, row);
+        vec2 atlasTexel = cell * gsVirtualPage.y + gsVirtualPage.z + (window - vec2(page) * gsVirtualPage.x);
+        lookup.layer = int(layer);
         lookup.inverseSize = gsVirtualPage.w;
         layerSize = float(gsVirtualPages.z);
         coord.xy = atlasTexel * gsVirtualPage.w;
