@@ -273,11 +273,13 @@ std::vector<BenchResult> ShadowBench::run(const BenchScene& scene,
     std::vector<FrameSamples> samples(configs.size());
     for (int round = 0; round < std::max(options_.rounds, 1); ++round) {
         for (std::size_t i = 0; i < configs.size(); ++i) {
-            sampleFrames(engines[i]->engine, scene, *engines[i]->target, samples[i]);
+            sampleFrames(*engines[i], scene, samples[i]);
         }
     }
     for (std::size_t i = 0; i < configs.size(); ++i) {
         results[i].shadowPass = summariseTimes(samples[i].shadow);
+        results[i].fitPart = summariseTimes(samples[i].fit);
+        results[i].mapsPart = summariseTimes(samples[i].maps);
         results[i].lightingPass = summariseTimes(samples[i].lighting);
         results[i].frame = summariseTimes(samples[i].frame);
         finish(scene, configs[i], *engines[i], results[i]);
@@ -434,27 +436,38 @@ PassTiming ShadowBench::pairedLightingOverhead(engine::Engine& shadowed, const B
 ShadowBench::PassTimes ShadowBench::passTimes(engine::Engine& engine, const BenchScene& scene,
                                               engine::RenderTarget& target) const {
     FrameSamples samples;
-    samplePasses(engine, scene, target, samples);
+    samplePasses(engine, nullptr, scene, target, samples);
     return {summariseTimes(samples.shadow), summariseTimes(samples.lighting)};
 }
 
-void ShadowBench::samplePasses(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-                               FrameSamples& samples) const {
+void ShadowBench::samplePasses(engine::Engine& engine, shadows::ShadowModule* module, const BenchScene& scene,
+                               engine::RenderTarget& target, FrameSamples& samples) const {
     engine.setPassTiming(method_);
+    if (module) {
+        module->setPartTiming(method_);
+    }
     for (int frame = 0; frame < std::max(options_.frames, 1); ++frame) {
         const engine::FrameStats stats = engine.renderFrame(scene.scene_, scene.camera_, target);
         samples.shadow.push_back(stats.prePassMilliseconds);
         samples.lighting.push_back(stats.lightingMilliseconds);
+        if (module) {
+            const shadows::ShadowStats parts = module->stats();
+            samples.fit.push_back(parts.fitMilliseconds);
+            samples.maps.push_back(parts.mapsMilliseconds);
+        }
     }
     engine.setPassTiming(std::nullopt);
+    if (module) {
+        module->setPartTiming(std::nullopt);
+    }
 }
 
-void ShadowBench::sampleFrames(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-                               FrameSamples& samples) const {
+void ShadowBench::sampleFrames(ConfigEngine& started, const BenchScene& scene, FrameSamples& samples) const {
     // A warm-up frame: the configuration timed before this one left the caches holding its own data.
-    engine.renderFrame(scene.scene_, scene.camera_, target);
-    samplePasses(engine, scene, target, samples);
-    sampleWholeFrames(engine, scene.scene_, scene.camera_, target, options_.frames, samples.frame);
+    started.engine.renderFrame(scene.scene_, scene.camera_, *started.target);
+    samplePasses(started.engine, started.module, scene, *started.target, samples);
+    sampleWholeFrames(started.engine, scene.scene_, scene.camera_, *started.target, options_.frames,
+                      samples.frame);
 }
 
 Accuracy ShadowBench::measure(const BenchScene& scene, const shadows::ShadowSettings& settings) const {
@@ -930,6 +943,9 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                         {"walkTexelsPerFrameMax", r.walkTexelsPerFrameMax}})},
              {"shadowPassMs",
               {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
+             {"shadowFitMs", {{"median", r.fitPart.median}, {"min", r.fitPart.min}, {"max", r.fitPart.max}}},
+             {"shadowMapsMs",
+              {{"median", r.mapsPart.median}, {"min", r.mapsPart.min}, {"max", r.mapsPart.max}}},
              {"lightingPassMs",
               {{"median", r.lightingPass.median}, {"min", r.lightingPass.min}, {"max", r.lightingPass.max}}},
              {"lightingOverheadMs", r.lightingOverhead

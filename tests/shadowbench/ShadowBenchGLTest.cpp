@@ -381,13 +381,15 @@ TEST(RunGLTest, TimesEveryConfigurationInAlternatedRoundsAndMeasuresEachAsAlone)
         EXPECT_EQ(together[i].metrics.acneRate, alone.metrics.acneRate);
         EXPECT_EQ(together[i].metrics.edges.trueToRendered.mean, alone.metrics.edges.trueToRendered.mean);
         EXPECT_EQ(together[i].mapResolution, alone.mapResolution);
-        for (const PassTiming& timing :
-             {together[i].frame, together[i].shadowPass, together[i].lightingPass}) {
+        for (const PassTiming& timing : {together[i].frame, together[i].shadowPass, together[i].fitPart,
+                                         together[i].mapsPart, together[i].lightingPass}) {
             EXPECT_EQ(timing.samples, options.frames * options.rounds);
             EXPECT_GT(timing.min, 0.0);
             EXPECT_LE(timing.min, timing.median);
             EXPECT_LE(timing.median, timing.max);
         }
+        // The parts were timed within the passes of the same frames.
+        EXPECT_LE(together[i].fitPart.min + together[i].mapsPart.min, together[i].shadowPass.max);
         EXPECT_EQ(alone.frame.samples, options.frames * options.rounds);
     }
     std::filesystem::remove_all(options.imageFolder);

@@ -363,6 +363,51 @@ TEST(ShadowModuleGLTest,
     EXPECT_EQ(module.stats().pages.rendered, 0);
 }
 
+class PartTimingGLTest : public ::testing::TestWithParam<MapAllocation> {};
+
+// The pre-pass's parts lie within the pass the engine times around them; a frame that keeps its maps spends
+// nothing in either, and with part timing off neither is measured.
+TEST_P(PartTimingGLTest, SplitsThePrePassIntoTheFitAndTheMaps) {
+    glTestContext();
+    engine::Scene scene = boxOnPlaneUnderASun();
+    ShadowSettings settings;
+    settings.mapAllocation = GetParam();
+    engine::Engine engine;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    engine::RenderTarget target({64, 48});
+    engine.renderFrame(scene, *scene.firstCamera(), target);
+    EXPECT_LT(module.stats().fitMilliseconds, 0.0) << "part timing is off by default";
+    EXPECT_LT(module.stats().mapsMilliseconds, 0.0);
+
+    const engine::TimingMethod method = engine::PassTimer::methodFor(glTestContext());
+    engine.setPassTiming(method);
+    module.setPartTiming(method);
+    scene.entity(*scene.find("box")).transform.translation.x += 0.5f; // the maps are drawn anew
+    const engine::FrameStats drawn = engine.renderFrame(scene, *scene.firstCamera(), target);
+    const ShadowStats parts = module.stats();
+    ASSERT_FALSE(parts.reusedMaps);
+    EXPECT_GE(parts.fitMilliseconds, 0.0);
+    EXPECT_GE(parts.mapsMilliseconds, 0.0);
+    EXPECT_LE(parts.fitMilliseconds + parts.mapsMilliseconds, drawn.prePassMilliseconds);
+
+    engine.renderFrame(scene, *scene.firstCamera(), target);
+    engine.renderFrame(scene, *scene.firstCamera(), target); // virtual maps keep theirs after an idle update
+    ASSERT_TRUE(module.stats().reusedMaps);
+    EXPECT_EQ(module.stats().fitMilliseconds, 0.0);
+    EXPECT_EQ(module.stats().mapsMilliseconds, 0.0);
+
+    module.setPartTiming(std::nullopt);
+    EXPECT_LT(module.stats().fitMilliseconds, 0.0);
+    engine.renderFrame(scene, *scene.firstCamera(), target);
+    EXPECT_LT(module.stats().mapsMilliseconds, 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShadowModuleGLTest, PartTimingGLTest,
+                         ::testing::Values(MapAllocation::Fitted, MapAllocation::Virtual),
+                         [](const ::testing::TestParamInfo<MapAllocation>& allocation) {
+                             return allocation.param == MapAllocation::Fitted ? "Fitted" : "Virtual";
+                         });
+
 TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     glTestContext();
     engine::EntityId camera = engine::kNoEntity;

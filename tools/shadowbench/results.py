@@ -1053,13 +1053,17 @@ def still_section(still):
                "\"Kept while nothing changes\"); VDSM draws its map every frame either way, so *moving* is the like-for-"
                f"like comparison and *still* what a view that stands still costs. Texels drawn: the part of the maps' texels "
                "the casters were drawn into, within the reach of the visible samples' lookups (docs/SHADOWS.md, "
-               f"\"Casters drawn only where the samples read\"). Medians of {still['frames']} frames, "
+               f"\"Casters drawn only where the samples read\"). The shadow pass's parts, timed apart in the same "
+               "frames (a wait between them, so they add up to a little more): the fit (the sample pass, whose depth "
+               "the lighting pass then reuses, and the reduction of its samples) and the maps (their clear and the "
+               f"casters). Medians of {still['frames']} frames, "
                f"{still['timingMethod']}, both programs on {still['renderer']}. Edges: p95 true→rendered / "
                "rendered→true, px, as in \"Defaults\".\n")
-    lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving) | texels drawn | moving frame ms "
+    lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving): fit + maps | texels drawn | moving frame ms "
              "| still frame ms | osg-vdsm frame ms | moving / VDSM | still / VDSM | memory | edges p95: ours / VDSM |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "pass": 0, "unshadowed": 0, "unshadowedPeers": 0}
+    tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "pass": 0, "maps": 0, "unshadowed": 0,
+             "unshadowedPeers": 0}
     peer_allocators = set()
     for r in ours:
         scene = r["scene"]
@@ -1080,11 +1084,13 @@ def still_section(still):
             tally["still"] += kept <= frame_ms(peer)
             tally["still06"] += kept <= 0.6 * frame_ms(peer)
             tally["pass"] += r["shadowPassMs"]["median"] > frame_ms(peer) - cost["unshadowedFrameMs"]["median"]
+            tally["maps"] += r["shadowMapsMs"]["median"] > frame_ms(peer) - cost["unshadowedFrameMs"]["median"]
         theirs = peer["edges"] if peer else None
         lines.append(
             f"| {scene} | {cost['triangles']} | {cost['unshadowedFrameMs']['median']:.1f} / "
             + (f"{peer_unshadowed:.1f}" if peer_unshadowed else "–")
-            + f" | {r['shadowPassMs']['median']:.1f} | {drawn_texels(r)} | {moving:.1f} | {kept:.1f} | "
+            + f" | {r['shadowPassMs']['median']:.1f}: {r['shadowFitMs']['median']:.1f} + "
+            f"{r['shadowMapsMs']['median']:.1f} | {drawn_texels(r)} | {moving:.1f} | {kept:.1f} | "
             + (f"{frame_ms(peer):.1f} | {moving / frame_ms(peer):.2f}× | {kept / frame_ms(peer):.2f}×" if peer
                else "– | – | –")
             + f" | {r['shadowBytes'] / 2**20:.0f} MiB | {mine['trueToRendered']['p95']:.1f} / "
@@ -1096,7 +1102,7 @@ def still_section(still):
                f"({tally['still06']} at ≤ 0.6×, the goal with virtual maps). Why moving frames miss: on "
                f"{tally['pass']} of {tally['peers']} our shadow pass alone (the sample pass, then the casters "
                "into a map fitted to the visible samples, which the model then fills) costs more than VDSM's frame over "
-               "our unshadowed one. VDSM fits its map to the view frustum and the scene's bounds, so the model covers "
+               f"our unshadowed one, and on {tally['maps']} the maps alone do. VDSM fits its map to the view frustum and the scene's bounds, so the model covers "
                "fewer of its texels, and its edges are the coarser ones of the last column.\n")
     allocator = ("its glibc thresholds raised as ours are (gs-osgshadow --allocator tuned; tools/osgpeer/README.md)"
                  if peer_allocators == {True} else "not every run of it on the glibc thresholds ours run on")

@@ -109,6 +109,8 @@ ShadowStats ShadowModule::stats() const {
     stats.reusedMaps = reusedMaps_;
     stats.sharedViewDepth = sharedViewDepth_;
     stats.casters = casters_;
+    stats.fitMilliseconds = fitMilliseconds_;
+    stats.mapsMilliseconds = mapsMilliseconds_;
     if (allocation_) {
         stats.bytes = allocation_->bytes();
         stats.virtualMaps = allocation_->servedVirtualMaps();
@@ -123,6 +125,15 @@ ShadowStats ShadowModule::stats() const {
         }
     }
     return stats;
+}
+
+void ShadowModule::setPartTiming(std::optional<engine::TimingMethod> method) {
+    if (!method) {
+        partTimer_.reset();
+    } else if (!partTimer_ || partTimer_->method() != *method) {
+        partTimer_.emplace(*method);
+    }
+    fitMilliseconds_ = mapsMilliseconds_ = -1.0;
 }
 
 std::optional<LightProjection> ShadowModule::lightProjection(int lightIndex) const {
@@ -166,6 +177,9 @@ void ShadowModule::detach() {
     samplers_.reset();
     jitter_.reset();
     fullscreenVertexArray_.reset();
+    if (partTimer_) {
+        partTimer_.emplace(partTimer_->method()); // its queries belong to this context
+    }
     host_ = nullptr;
 }
 
@@ -287,15 +301,28 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     const bool reusable = settings_.reuseUnchangedMaps;
     reusedMaps_ = reusable && allocation_ && drawnFrom_ && *drawnFrom_ == inputs &&
                   (!allocation_->servedVirtualMaps() || allocation_->pageStats().rendered == 0);
+    fitMilliseconds_ = mapsMilliseconds_ = partTimer_ ? 0.0 : -1.0;
     if (reusedMaps_) {
         return;
     }
     drawnFrom_.reset(); // until this frame's maps are drawn
     const std::uint64_t sampleDraws = samples_->draws();
+    if (partTimer_) {
+        partTimer_->begin();
+    }
     fitMaps(frame, inputs.fit, boxes, entities);
+    if (partTimer_) {
+        fitMilliseconds_ = partTimer_->end();
+    }
     sharedViewDepth_ = samples_->draws() != sampleDraws && samples_->sharedDepth();
     if (!slots_.empty()) {
+        if (partTimer_) {
+            partTimer_->begin();
+        }
         drawMaps(frame);
+        if (partTimer_) {
+            mapsMilliseconds_ = partTimer_->end();
+        }
     }
     if (reusable) {
         drawnFrom_ = std::make_unique<MapInputs>(std::move(inputs));

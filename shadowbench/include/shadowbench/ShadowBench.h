@@ -24,6 +24,10 @@
 #include <string_view>
 #include <vector>
 
+namespace shadows {
+class ShadowModule;
+} // namespace shadows
+
 namespace shadowbench {
 
 /// @brief One configuration of a sweep: a label and the shadow settings it runs.
@@ -53,6 +57,10 @@ struct BenchResult {
     /// Against a soft ground truth (BenchOptions::softSamplesPerAxis): the penumbra's errors.
     std::optional<SoftShadowMetrics> soft;
     PassTiming shadowPass;
+    /// The shadow pass's two parts, timed apart in the same frames (shadows::ShadowStats::fitMilliseconds and
+    /// mapsMilliseconds): the fit (sample pass, reduction or page marking) and the maps (clears, casters).
+    PassTiming fitPart;
+    PassTiming mapsPart;
     PassTiming lightingPass;
     /// The cost model (BenchOptions::costModel): the lighting pass minus the unshadowed one, each round's two
     /// timed back to back so that a drift of the machine's speed cancels; median, least and largest over the
@@ -339,6 +347,8 @@ private:
     /// Milliseconds of each timed frame, over every round.
     struct FrameSamples {
         std::vector<double> shadow;
+        std::vector<double> fit; // the shadow pass's parts, where a shadow module times them
+        std::vector<double> maps;
         std::vector<double> lighting;
         std::vector<double> frame;
     };
@@ -353,13 +363,12 @@ private:
     /// overhead, accuracy and the optional measurements.
     void finish(const BenchScene& scene, const BenchConfig& config, ConfigEngine& started,
                 BenchResult& result) const;
-    /// BenchOptions::frames frames of pass times, appended.
-    void samplePasses(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-                      FrameSamples& samples) const;
+    /// BenchOptions::frames frames of pass times, appended; with `module`, its shadow pass's parts too.
+    void samplePasses(engine::Engine& engine, shadows::ShadowModule* module, const BenchScene& scene,
+                      engine::RenderTarget& target, FrameSamples& samples) const;
     /// A warm-up frame, BenchOptions::frames frames of pass times, then as many whole frames after another
     /// warm-up frame, appended.
-    void sampleFrames(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target,
-                      FrameSamples& samples) const;
+    void sampleFrames(ConfigEngine& started, const BenchScene& scene, FrameSamples& samples) const;
     /// The pre-pass and lighting-pass times of BenchOptions::frames frames of `engine` on `scene`.
     PassTimes passTimes(engine::Engine& engine, const BenchScene& scene, engine::RenderTarget& target) const;
     /// BenchResult::lightingOverhead: `shadowed`'s lighting pass against a new unshadowed engine's,

@@ -7,6 +7,7 @@
 #include <shadows/VirtualPages.h>
 
 #include <engine/Module.h>
+#include <engine/PassTimer.h>
 #include <engine/gl/Buffer.h>
 #include <engine/gl/VertexArray.h>
 
@@ -56,6 +57,12 @@ struct ShadowStats {
     VirtualPageStats pages;
     /// What the caster pass drew and left out in the last frame, over every map (zero when it drew none).
     engine::DrawnMeshes casters;
+    /// The last frame's pre-pass in its two parts (ShadowModule::setPartTiming), milliseconds: the fit (the
+    /// view's sample pass and its reduction, or the virtual maps' page marking, and the allocation) and the
+    /// maps (their clears, the casters, moment filtering). Zero for a frame that kept its maps, negative
+    /// while part timing is off.
+    double fitMilliseconds = -1.0;
+    double mapsMilliseconds = -1.0;
 };
 
 /// @brief The shadow module: shadow maps for shadow-casting lights and the lighting-pass visibility of the
@@ -95,6 +102,10 @@ public:
     /// where the camera's own draw casters only where its visible samples read
     /// (LightProjection::drawnRegion).
     void setFitView(std::optional<FitView> view) { fitView_ = view; }
+    /// @brief Times the pre-pass's two parts, the fit and the maps (ShadowStats::fitMilliseconds,
+    /// mapsMilliseconds), by `method`; nullopt (the default) times nothing. The parts wait for the GPU
+    /// between them, so together they take a little more than the pass does untimed.
+    void setPartTiming(std::optional<engine::TimingMethod> method);
 
     /// @brief Registers the module's GLSL files and reserves its texture units.
     void attach(engine::ModuleHost& host) override;
@@ -167,6 +178,9 @@ private:
     bool reusedMaps_ = false;                       // this frame kept them
     bool sharedViewDepth_ = false;                  // this frame's sample pass took the view depth
     engine::DrawnMeshes casters_;                   // what this frame's caster pass drew
+    std::optional<engine::PassTimer> partTimer_;    // times the fit and the maps apart (setPartTiming)
+    double fitMilliseconds_ = -1.0;                 // this frame's parts, as ShadowStats gives them
+    double mapsMilliseconds_ = -1.0;
     std::uint64_t frameIndex_ = 0;
     bool dirty_ = true;
 };
