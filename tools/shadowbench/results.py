@@ -944,8 +944,8 @@ def sizing_section(sizing, floor_views=None):
                f"all in one run, over {timed_frames(sizing)}; edges and m ≤ 1 as in \"Defaults\" (texel density from "
                "the map drawn). The default keeps the full map at this size wherever the Defaults sweep's low suns need it (docs/SHADOWS.md); "
                "the coarser targets show what fill and memory the view would let go, and the table after it what "
-               "they lose in the Defaults views. Two other ways to the same floor at less cost, with the default's "
-               "settings otherwise: `virtual`, virtual maps (`mapAllocation` virtual: pages only where pixels ask, "
+               "they lose in the Defaults views. Two alternatives to the default's map, with its settings otherwise: "
+               "`virtual`, virtual maps (`mapAllocation` virtual: pages only where pixels ask, "
                "\"Virtual maps\"), and `d16`, the map in 16-bit depth (`depthFormat` d16: half the memory and the "
                "bytes each lookup reads).\n")
     lines = ["| scene | configuration | map side | cascades | shadow pass ms | frame ms | edges true→rendered "
@@ -1059,8 +1059,8 @@ def still_section(still):
                f"casters). Medians of {still['frames']} frames, "
                f"{still['timingMethod']}, both programs on {still['renderer']}. Edges: p95 true→rendered / "
                "rendered→true, px, as in \"Defaults\".\n")
-    lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving): fit + maps | texels drawn | moving frame ms "
-             "| still frame ms | osg-vdsm frame ms | moving / VDSM | still / VDSM | memory | edges p95: ours / VDSM |",
+    lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving): fit + maps | texels drawn "
+             "| moving frame ms | still frame ms | osg-vdsm frame ms | moving / VDSM | still / VDSM | memory | edges p95: ours / VDSM |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "pass": 0, "maps": 0, "unshadowed": 0,
              "unshadowedPeers": 0}
@@ -1102,8 +1102,9 @@ def still_section(still):
                f"({tally['still06']} at ≤ 0.6×, the goal with virtual maps). Why moving frames miss: on "
                f"{tally['pass']} of {tally['peers']} our shadow pass alone (the sample pass, then the casters "
                "into a map fitted to the visible samples, which the model then fills) costs more than VDSM's frame over "
-               f"our unshadowed one, and on {tally['maps']} the maps alone do. VDSM fits its map to the view frustum and the scene's bounds, so the model covers "
-               "fewer of its texels, and its edges are the coarser ones of the last column.\n")
+               f"our unshadowed one, and on {tally['maps']} the maps alone do. VDSM fits its map to the view frustum "
+               "and the scene's bounds, so the model covers fewer of its texels, and its edges are the coarser ones of "
+               "the last column.\n")
     allocator = ("its glibc thresholds raised as ours are (gs-osgshadow --allocator tuned; tools/osgpeer/README.md)"
                  if peer_allocators == {True} else "not every run of it on the glibc thresholds ours run on")
     out.append(f"Unshadowed, against the peer's own unshadowed pass, {allocator}: ours ≤ 1.0× on "
