@@ -306,23 +306,20 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
         return;
     }
     drawnFrom_.reset(); // until this frame's maps are drawn
-    const std::uint64_t sampleDraws = samples_->draws();
-    if (partTimer_) {
-        partTimer_->begin();
-    }
-    fitMaps(frame, inputs.fit, boxes, entities);
-    if (partTimer_) {
-        fitMilliseconds_ = partTimer_->end();
-    }
-    sharedViewDepth_ = samples_->draws() != sampleDraws && samples_->sharedDepth();
-    if (!slots_.empty()) {
+    const auto timedPart = [&](double& milliseconds, const auto& part) {
         if (partTimer_) {
             partTimer_->begin();
         }
-        drawMaps(frame);
+        part();
         if (partTimer_) {
-            mapsMilliseconds_ = partTimer_->end();
+            milliseconds = partTimer_->end();
         }
+    };
+    const std::uint64_t sampleDraws = samples_->draws();
+    timedPart(fitMilliseconds_, [&] { fitMaps(frame, inputs.fit, boxes, entities); });
+    sharedViewDepth_ = samples_->draws() != sampleDraws && samples_->sharedDepth();
+    if (!slots_.empty()) {
+        timedPart(mapsMilliseconds_, [&] { drawMaps(frame); });
     }
     if (reusable) {
         drawnFrom_ = std::make_unique<MapInputs>(std::move(inputs));
