@@ -57,11 +57,12 @@ struct ShadowStats {
     VirtualPageStats pages;
     /// What the caster pass drew and left out in the last frame, over every map (zero when it drew none).
     engine::DrawnMeshes casters;
-    /// The last frame's pre-pass in its two parts (ShadowModule::setPartTiming), milliseconds: the fit (the
-    /// view's sample pass and its reduction, or the virtual maps' page marking, and the allocation) and the
-    /// maps (their clears, the casters, moment filtering). Zero for a frame that kept its maps, negative
-    /// while part timing is off.
+    /// The last frame's pre-pass in its two parts (ShadowModule::setPartTiming), milliseconds: this, the fit
+    /// (the view's sample pass and its reduction, or the virtual maps' page marking, and the allocation).
+    /// Zero for a frame that kept its maps, negative while part timing is off.
     double fitMilliseconds = -1.0;
+    /// The other part, the maps (their clears, the casters, moment filtering); zero and negative as
+    /// fitMilliseconds.
     double mapsMilliseconds = -1.0;
 };
 
