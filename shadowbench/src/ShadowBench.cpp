@@ -100,6 +100,11 @@ std::vector<float> receiverTexelSizes(const std::vector<glm::vec3>& positions,
     return sizes;
 }
 
+/// A timing's median, least and greatest milliseconds, as results.json gives every timed figure.
+nlohmann::json timingJson(const PassTiming& timing) {
+    return {{"median", timing.median}, {"min", timing.min}, {"max", timing.max}};
+}
+
 nlohmann::json probeMapCosts(const std::vector<ProbeMapCost>& costs) {
     if (costs.empty()) {
         return nlohmann::json();
@@ -941,30 +946,19 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                                         {"warmRendered", r.warmPages.rendered},
                                                         {"walkTexelsPerFrame", r.walkTexelsPerFrame},
                                                         {"walkTexelsPerFrameMax", r.walkTexelsPerFrameMax}})},
-             {"shadowPassMs",
-              {{"median", r.shadowPass.median}, {"min", r.shadowPass.min}, {"max", r.shadowPass.max}}},
-             {"shadowFitMs", {{"median", r.fitPart.median}, {"min", r.fitPart.min}, {"max", r.fitPart.max}}},
-             {"shadowMapsMs",
-              {{"median", r.mapsPart.median}, {"min", r.mapsPart.min}, {"max", r.mapsPart.max}}},
-             {"lightingPassMs",
-              {{"median", r.lightingPass.median}, {"min", r.lightingPass.min}, {"max", r.lightingPass.max}}},
-             {"lightingOverheadMs", r.lightingOverhead
-                                        ? nlohmann::json({{"median", r.lightingOverhead->median},
-                                                          {"min", r.lightingOverhead->min},
-                                                          {"max", r.lightingOverhead->max}})
-                                        : nlohmann::json()},
+             {"shadowPassMs", timingJson(r.shadowPass)},
+             {"shadowFitMs", timingJson(r.fitPart)},
+             {"shadowMapsMs", timingJson(r.mapsPart)},
+             {"lightingPassMs", timingJson(r.lightingPass)},
+             {"lightingOverheadMs", r.lightingOverhead ? timingJson(*r.lightingOverhead) : nlohmann::json()},
              {"frameMs",
               {{"median", r.frame.median},
                {"min", r.frame.min},
                {"max", r.frame.max},
                {"samples", r.frame.samples}}},
-             {"stillFrameMs",
-              {{"median", r.stillFrame.median}, {"min", r.stillFrame.min}, {"max", r.stillFrame.max}}},
+             {"stillFrameMs", timingJson(r.stillFrame)},
              {"stillFrameKeptMaps", r.stillFrameKeptMaps},
-             {"walkFrameMs", r.walkFrame.median < 0.0 ? nlohmann::json()
-                                                      : nlohmann::json({{"median", r.walkFrame.median},
-                                                                        {"min", r.walkFrame.min},
-                                                                        {"max", r.walkFrame.max}})},
+             {"walkFrameMs", r.walkFrame.median < 0.0 ? nlohmann::json() : timingJson(r.walkFrame)},
              {"peer", r.peerClass.empty() ? nlohmann::json() : nlohmann::json(r.peerClass)},
              {"naive", r.peerClass.empty() && shadows::traitsOf(r.config.settings.technique).naive},
              {"peerUnlitReceivers", r.peerUnlitReceivers},
@@ -987,15 +981,9 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"drawCalls", c.drawCalls},
              {"culledChunks", c.culledChunks},
              {"meshBytes", c.meshBytes},
-             {"unshadowedFrameMs",
-              {{"median", c.unshadowedFrame.median},
-               {"min", c.unshadowedFrame.min},
-               {"max", c.unshadowedFrame.max}}},
-             {"unshadowedLightingMs", c.unshadowedLighting.median < 0.0
-                                          ? nlohmann::json()
-                                          : nlohmann::json({{"median", c.unshadowedLighting.median},
-                                                            {"min", c.unshadowedLighting.min},
-                                                            {"max", c.unshadowedLighting.max}})},
+             {"unshadowedFrameMs", timingJson(c.unshadowedFrame)},
+             {"unshadowedLightingMs",
+              c.unshadowedLighting.median < 0.0 ? nlohmann::json() : timingJson(c.unshadowedLighting)},
              {"filteredFetchMs",
               c.filteredFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.filteredFetchMs)},
              {"compareFetchMs", c.compareFetchMs < 0.0 ? nlohmann::json() : nlohmann::json(c.compareFetchMs)},
@@ -1007,11 +995,8 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
                                : nlohmann::json({{"samplesPerAxis", c.softTruth.samplesPerAxis},
                                                  {"radius", c.softTruth.radius},
                                                  {"convergenceRmse", c.softTruth.convergenceRmse}})},
-             {"peerUnshadowedFrameMs", c.peerUnshadowedFrame.median < 0.0
-                                           ? nlohmann::json()
-                                           : nlohmann::json({{"median", c.peerUnshadowedFrame.median},
-                                                             {"min", c.peerUnshadowedFrame.min},
-                                                             {"max", c.peerUnshadowedFrame.max}})},
+             {"peerUnshadowedFrameMs",
+              c.peerUnshadowedFrame.median < 0.0 ? nlohmann::json() : timingJson(c.peerUnshadowedFrame)},
              {"peerAllocatorTuned",
               c.peerAllocatorTuned ? nlohmann::json(*c.peerAllocatorTuned) : nlohmann::json()}});
     }
