@@ -41,23 +41,17 @@ layout(std430, binding = 0) buffer GsPageRequests {
     uint requests[];
 };
 
-bool gsSurfaceAt(ivec2 texel, out vec3 position) {
+// The position at `texel` and 1 in w where the depth image holds a surface there, else w 0.
+vec4 gsSampleAt(ivec2 texel) {
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, uSize))) {
-        return false;
+        return vec4(0.0);
     }
     float depth = texelFetch(uDepth, texel, 0).r;
     if (!(depth < 1.0 && depth >= 0.0)) { // 1 is the cleared far plane: no surface
-        return false;
+        return vec4(0.0);
     }
     vec4 world = uClipToWorld * vec4((vec2(texel) + 0.5) / vec2(uSize) * 2.0 - 1.0, 2.0 * depth - 1.0, 1.0);
-    position = world.xyz / world.w;
-    return true;
-}
-
-// The position at `texel` and 1 in w where the depth image holds a surface there, else w 0.
-vec4 gsSampleAt(ivec2 texel) {
-    vec3 position = vec3(0.0);
-    return gsSurfaceAt(texel, position) ? vec4(position, 1.0) : vec4(0.0);
+    return vec4(world.xyz / world.w, 1.0);
 }
 
 // The screen derivative of the position at `centre` from its neighbours `behind` and `ahead` (left and right, or
