@@ -1,6 +1,7 @@
 #include "FittedShadowMaps.h"
 #include "JitterTexture.h"
 #include "MapInputs.h"
+#include "PageMarkPrograms.h"
 #include "ShadowSamplers.h"
 #include "VirtualShadowMaps.h"
 #include "VisibleSamples.h"
@@ -172,7 +173,7 @@ void ShadowModule::detach() {
     releaseResources();
     samples_.reset();
     warnings_.reset();
-    pageMarkProgram_.reset();
+    pageMarkPrograms_.reset();
     shadowBlock_.reset();
     samplers_.reset();
     jitter_.reset();
@@ -196,12 +197,11 @@ MapAllocator& ShadowModule::allocation() {
         return *allocation_;
     }
     if (settings_.mapAllocation == MapAllocation::Virtual) {
-        if (!pageMarkProgram_) {
-            const std::array stages{host_->shaders().preprocess(GL_COMPUTE_SHADER, "shadows/pages.comp", {})};
-            pageMarkProgram_ = std::make_unique<engine::gl::Program>("shadows/pages.comp", stages);
+        if (!pageMarkPrograms_) {
+            pageMarkPrograms_ = std::make_unique<PageMarkPrograms>(host_->shaders());
         }
         allocation_ = std::make_unique<VirtualShadowMaps>(*host_, settings_, plan_, *samples_,
-                                                          *pageMarkProgram_, *warnings_);
+                                                          *pageMarkPrograms_, *warnings_);
     } else {
         allocation_ = std::make_unique<FittedShadowMaps>(*host_, settings_, plan_, *samples_, *warnings_);
     }

@@ -51,10 +51,11 @@ std::optional<glm::vec4> shadowRect(const glm::mat4& worldToShadow, const Aabb& 
 } // namespace
 
 VirtualShadowMaps::VirtualShadowMaps(engine::ModuleHost& host, const ShadowSettings& settings,
-                                     const ShadowPlan& plan, VisibleSamples& samples,
-                                     const engine::gl::Program& mark, OnceWarnings& warnings)
-    : host_(host), samples_(samples), mark_(mark), warnings_(warnings), budgetMiB_(settings.virtualBudgetMiB),
-      plan_(plan), pageSize_(settings.virtualPageSize), border_(virtualPageBorderTexels(plan)),
+                                     const ShadowPlan& plan, VisibleSamples& samples, PageMarkPrograms& marks,
+                                     OnceWarnings& warnings)
+    : host_(host), samples_(samples), marks_(marks), warnings_(warnings),
+      budgetMiB_(settings.virtualBudgetMiB), plan_(plan), pageSize_(settings.virtualPageSize),
+      border_(virtualPageBorderTexels(plan)),
       tile_(settings.virtualPageSize + 2 * virtualPageBorderTexels(plan)),
       texelPixels_(settings.virtualTexelPixels),
       budget_(static_cast<std::size_t>(settings.virtualBudgetMiB) << 20), pool_(0) {
@@ -239,7 +240,7 @@ VirtualShadowMaps::Light VirtualShadowMaps::fitLight(const engine::FrameLight& l
 }
 
 PageRequests VirtualShadowMaps::markPages(Light& light, const FitView& fit, int levelBase, glm::ivec2 size) {
-    const engine::gl::Program& mark = mark_;
+    const engine::gl::Program& mark = marks_.forFaces(light.faceCount);
     const int side = kVirtualResolution / pageSize_;
     const glm::mat4 cameraWorld = glm::inverse(fit.view);
     const glm::vec3 camera(cameraWorld[3]);
@@ -255,7 +256,6 @@ PageRequests VirtualShadowMaps::markPages(Light& light, const FitView& fit, int 
     mark.set("uPagesPerSide", side);
     glUniform1f(mark.uniformLocation("uReach"), static_cast<float>(border_));
     glUniform1f(mark.uniformLocation("uTexelPixels"), texelPixels_);
-    mark.set("uFaces", light.faceCount);
     if (light.faceCount == 0) {
         std::array<glm::ivec2, kRequestLevels> origins{};
         for (int level = 0; level < kRequestLevels; ++level) {
@@ -279,6 +279,7 @@ PageRequests VirtualShadowMaps::markPages(Light& light, const FitView& fit, int 
                 texelScale = projection.texelScale;
             }
         }
+        mark.set("uFaces", light.faceCount);
         glUniformMatrix4fv(mark.uniformLocation("uFaceToShadow"), kCubeFaces, GL_FALSE,
                            glm::value_ptr(faces[0]));
         mark.set("uFaceMask", mask);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "MapAllocator.h"
+#include "PageMarkPrograms.h"
 
 #include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettings.h>
@@ -34,11 +35,11 @@ class VisibleSamples;
 class VirtualShadowMaps final : public MapAllocator {
 public:
     /// @brief A pool in `settings.virtualBudgetMiB` for the plan's formats, allocated with the first frame's
-    /// lights (their page tables share the budget); pages are marked with `mark` from the view's depth drawn
+    /// lights (their page tables share the budget); pages are marked with `marks` from the view's depth drawn
     /// by `samples`, and an overflowing budget is said once in `warnings`. Throws std::invalid_argument when
     /// the budget holds no page beside the page requests.
     VirtualShadowMaps(engine::ModuleHost& host, const ShadowSettings& settings, const ShadowPlan& plan,
-                      VisibleSamples& samples, const engine::gl::Program& mark, OnceWarnings& warnings);
+                      VisibleSamples& samples, PageMarkPrograms& marks, OnceWarnings& warnings);
     ~VirtualShadowMaps() override;
 
     /// @brief Serves the frame's shadow-casting lights from virtual maps: draws the view's depth, marks and
@@ -117,8 +118,8 @@ private:
     };
     /// Fits `light`'s clipmap or faces and drops its pages when what they were drawn with changed.
     Light fitLight(const engine::FrameLight& light, const FitView& fit, std::span<const Aabb> boxes);
-    /// Runs `mark` for `light` and reads back its request bits as pages; a clipmap's are clamped to its
-    /// kClipmapLevels (which sets the geometry's finest level).
+    /// Runs the page marking for `light` and reads back its request bits as pages; a clipmap's are clamped to
+    /// its kClipmapLevels (which sets the geometry's finest level).
     PageRequests markPages(Light& light, const FitView& fit, int levelBase, glm::ivec2 size);
     void uploadPageTables();
     /// Sizes the pool to `wanted` tiles, at most what the budget leaves beside `tableLayers` page-table
@@ -144,7 +145,7 @@ private:
 
     engine::ModuleHost& host_;
     VisibleSamples& samples_;
-    const engine::gl::Program& mark_;
+    PageMarkPrograms& marks_;
     OnceWarnings& warnings_;
     int budgetMiB_ = 0;
     bool served_ = false; // the last frame had a shadow-casting light

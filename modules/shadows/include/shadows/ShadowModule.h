@@ -23,6 +23,7 @@ struct LightMapsBlock;
 struct MapInputs;
 struct MapSlot;
 class MapAllocator;
+class PageMarkPrograms;
 class ShadowSamplers;
 class JitterTexture;
 class VisibleSamples;
@@ -166,10 +167,10 @@ private:
     std::unique_ptr<MapAllocator> allocation_;
     std::unique_ptr<engine::gl::Buffer> shadowBlock_;
     std::optional<FitView> fitView_;
-    // The view's depth, which fits directional maps or marks virtual pages, and the page-marking program
+    // The view's depth, which fits directional maps or marks virtual pages, and the page-marking programs
     // live while attached: a settings change makes a new allocation, not these anew.
     std::unique_ptr<VisibleSamples> samples_;
-    std::unique_ptr<engine::gl::Program> pageMarkProgram_;
+    std::unique_ptr<PageMarkPrograms> pageMarkPrograms_;
     std::unique_ptr<OnceWarnings> warnings_;
     engine::ShaderVariantKey lightingKey_ = 0;
     engine::ShaderVariantKey depthKey_ = 0;

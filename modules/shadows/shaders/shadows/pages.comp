@@ -3,7 +3,8 @@
 // clipmap level (directional lights, gsVirtualLevel) or mip level (spot maps and point lights' faces,
 // gsVirtualFaceLevel) whose texels span at most a pixel there, that its lookup and kernel read
 // (gsVirtualPageSpan). The requests are bits, one per page of each request level's window, read back by the
-// module (ShadowModule::markPages), which also mirrors the level choice on the CPU in its tests.
+// module (ShadowModule::markPages), which also mirrors the level choice on the CPU in its tests. Compiled for one
+// kind of light, GS_PAGES_CLIPMAP or GS_PAGES_PERSPECTIVE (PageMarkPrograms).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #define GS_OUT(T) out T
@@ -14,19 +15,21 @@ const int GS_REQUEST_LEVELS = 64;
 layout(binding = 0) uniform sampler2D uDepth;
 uniform ivec2 uSize;
 uniform mat4 uClipToWorld;
-uniform mat4 uWorldToLight;
-uniform vec3 uToLight;
 uniform vec3 uCamera;
-uniform int uLevelBase;
 uniform int uPageSize;
 uniform int uPagesPerSide;
 uniform float uReach;
 uniform float uTexelPixels; // the m a page's level is chosen for (ShadowSettings::virtualTexelPixels)
+#ifdef GS_PAGES_CLIPMAP
+uniform mat4 uWorldToLight;
+uniform vec3 uToLight;
+uniform int uLevelBase;
 // First page of each request level's window (ClipmapGeometry::windowOrigin), from the CPU so both agree.
 uniform ivec2 uWindowOrigin[GS_REQUEST_LEVELS];
-// Spot and point lights: 1 or 6 perspective maps (0 for a directional clipmap), each world -> shadow texture
-// space, of uFaceLevels mip levels; faces not in uFaceMask have no visible receiver. A pixel beyond the light's
-// range or outside a spot's cone (uConeCosine, -2 for a point light) gets none of its light and asks nothing.
+#else
+// Spot and point lights: 1 or 6 perspective maps, each world -> shadow texture space, of uFaceLevels mip levels;
+// faces not in uFaceMask have no visible receiver. A pixel beyond the light's range or outside a spot's cone
+// (uConeCosine, -2 for a point light) gets none of its light and asks nothing.
 uniform int uFaces;
 uniform int uFaceMask;
 uniform int uFaceLevels;
@@ -36,6 +39,7 @@ uniform vec3 uSpotDirection;
 uniform float uConeCosine;
 uniform float uRange;
 uniform float uTexelScale; // a level-0 texel's world size per unit of distance along the face's axis
+#endif
 
 layout(std430, binding = 0) buffer GsPageRequests {
     uint requests[];
@@ -79,6 +83,7 @@ void gsMark(int levelIndex, ivec2 page) {
     }
 }
 
+#ifdef GS_PAGES_PERSPECTIVE
 // The pages of a spot map or cube face the pixel at `position` (screen derivatives dPdx, dPdy, facet `normal`)
 // reads.
 void gsMarkPerspective(vec3 position, vec3 dPdx, vec3 dPdy, vec3 normal, float pixelSize) {
@@ -123,23 +128,10 @@ void gsMarkPerspective(vec3 position, vec3 dPdx, vec3 dPdy, vec3 normal, float p
         }
     }
 }
-
-// Marks the pages the pixel at `centre` asks for, from its four neighbours (w: 1 where a surface is).
-void gsMarkPixel(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above) {
-    vec3 dPdx;
-    vec3 dPdy;
-    if (!(centre.w > 0.0) || !gsDerivative(left, centre, right, dPdx) || !gsDerivative(below, centre, above, dPdy)) {
-        return;
-    }
-    vec3 position = centre.xyz;
-    // The facet, turned towards the camera: lit where it faces the light too.
-    vec3 normal = cross(dPdx, dPdy);
-    normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
-    float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
-    if (uFaces > 0) {
-        gsMarkPerspective(position, dPdx, dPdy, normal, pixelSize);
-        return;
-    }
+#else
+// The pages of a directional light's clipmap the pixel at `position` (screen derivatives dPdx, dPdy, facet
+// `normal`) reads.
+void gsMarkClipmap(vec3 position, vec3 dPdx, vec3 dPdy, vec3 normal, float pixelSize) {
     mat3 toLight = mat3(uWorldToLight);
     bool lit = dot(normal, uToLight) > 0.0;
     float unitFootprint = lit ? gsTexelFootprintPixels((toLight * dPdx).xy, (toLight * dPdy).xy) : 0.0;
@@ -166,6 +158,26 @@ void gsMarkPixel(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above) {
             break;
         }
     }
+}
+#endif
+
+// Marks the pages the pixel at `centre` asks for, from its four neighbours (w: 1 where a surface is).
+void gsMarkPixel(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above) {
+    vec3 dPdx;
+    vec3 dPdy;
+    if (!(centre.w > 0.0) || !gsDerivative(left, centre, right, dPdx) || !gsDerivative(below, centre, above, dPdy)) {
+        return;
+    }
+    vec3 position = centre.xyz;
+    // The facet, turned towards the camera: lit where it faces the light too.
+    vec3 normal = cross(dPdx, dPdy);
+    normal = dot(normal, uCamera - position) < 0.0 ? -normal : normal;
+    float pixelSize = sqrt(min(dot(dPdx, dPdx), dot(dPdy, dPdy)));
+#ifdef GS_PAGES_PERSPECTIVE
+    gsMarkPerspective(position, dPdx, dPdy, normal, pixelSize);
+#else
+    gsMarkClipmap(position, dPdx, dPdy, normal, pixelSize);
+#endif
 }
 
 // Each invocation marks a block of 4x4 pixels (neighbours mostly ask for the same page, so one atomic serves a run
