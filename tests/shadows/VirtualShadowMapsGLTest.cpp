@@ -236,6 +236,29 @@ TEST(VirtualShadowMaps, OverBudgetFallsBackToCoarserLevels) {
     EXPECT_GT(shadowed(image), shadowed(reference) * 9 / 10);
 }
 
+// The page marking gathers the view's depth through a sampler: one the application (or a fitted map's lookup)
+// left bound to that unit, with comparison and linear filtering, changes no page and no pixel.
+TEST(VirtualShadowMaps, MarkingIgnoresASamplerLeftOnItsUnit) {
+    glTestContext();
+    content::LoadedScene loaded = loadVirtualScene("knob");
+    VirtualRig clean(loaded, virtualSettings(), {157, 113});
+    const engine::Image reference = clean.frame();
+    const ShadowStats cleanStats = clean.module->stats();
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LESS);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindSampler(0, sampler);
+    VirtualRig left(loaded, virtualSettings(), {157, 113});
+    const engine::Image image = left.frame();
+    glBindSampler(0, 0);
+    glDeleteSamplers(1, &sampler);
+    EXPECT_EQ(left.module->stats().pages.requested, cleanStats.pages.requested);
+    EXPECT_EQ(differing(image, reference), 0u);
+}
+
 // The pool holds what the view asks for, not the whole budget: it grows by doubling as a larger view asks
 // for more, its resident pages copied along, within the budget.
 TEST(VirtualShadowMaps, PoolGrowsToWhatTheViewAsksWithinTheBudget) {

@@ -291,6 +291,8 @@ PageRequests VirtualShadowMaps::markPages(Light& light, const FitView& fit, int 
         glUniform1f(mark.uniformLocation("uTexelScale"), texelScale);
     }
     glBindTextureUnit(0, samplesDepth_);
+    // The gathers read the texture's own nearest filtering, not a comparison sampler left on the unit.
+    glBindSampler(0, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, requests_->id());
     // 8x8 invocations a group, each marking a 4x4 block of pixels (pages.comp).
     const glm::ivec2 groups = (size + glm::ivec2(31)) / 32;

@@ -45,17 +45,27 @@ layout(std430, binding = 0) buffer GsPageRequests {
     uint requests[];
 };
 
-// The position at `texel` and 1 in w where the depth image holds a surface there, else w 0.
-vec4 gsSampleAt(ivec2 texel) {
+// The position at `texel`, whose depth is `depth`, and 1 in w where the depth image holds a surface there, else
+// w 0.
+vec4 gsSampleAt(ivec2 texel, float depth) {
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, uSize))) {
         return vec4(0.0);
     }
-    float depth = texelFetch(uDepth, texel, 0).r;
     if (!(depth < 1.0 && depth >= 0.0)) { // 1 is the cleared far plane: no surface
         return vec4(0.0);
     }
     vec4 world = uClipToWorld * vec4((vec2(texel) + 0.5) / vec2(uSize) * 2.0 - 1.0, 2.0 * depth - 1.0, 1.0);
     return vec4(world.xyz / world.w, 1.0);
+}
+
+// The depths of rows `row` and `row` + 1, columns -1 to 4, of the block at `origin`, three 2x2 texels to each
+// vector: x (0, 1), y (1, 1), z (1, 0), w (0, 0) from its lower left texel, as textureGather orders them. Each
+// gather's coordinate is the four texels' shared corner, which picks them however it rounds.
+void gsGatherRows(ivec2 origin, int row, out vec4 depths0, out vec4 depths1, out vec4 depths2) {
+    vec2 inverseSize = 1.0 / vec2(uSize);
+    depths0 = textureGather(uDepth, vec2(origin + ivec2(0, row + 1)) * inverseSize);
+    depths1 = textureGather(uDepth, vec2(origin + ivec2(2, row + 1)) * inverseSize);
+    depths2 = textureGather(uDepth, vec2(origin + ivec2(4, row + 1)) * inverseSize);
 }
 
 // The screen derivative of the position at `centre` from its neighbours `behind` and `ahead` (left and right, or
@@ -180,45 +190,70 @@ void gsMarkPixel(vec4 centre, vec4 left, vec4 right, vec4 below, vec4 above) {
 #endif
 }
 
+// The positions of columns -1 to 4 of row `row` of the block at `origin`, from the gathers of the two rows it
+// belongs to (`upper`: it is their second). Without `ends`, columns -1 and 4 are left out (w 0).
+void gsSampleRow(ivec2 origin, int row, vec4 depths0, vec4 depths1, vec4 depths2, bool upper, bool ends,
+                 out vec4 column0, out vec4 column1, out vec4 column2, out vec4 column3, out vec4 column4,
+                 out vec4 column5) {
+    column0 = ends ? gsSampleAt(origin + ivec2(-1, row), upper ? depths0.x : depths0.w) : vec4(0.0);
+    column1 = gsSampleAt(origin + ivec2(0, row), upper ? depths0.y : depths0.z);
+    column2 = gsSampleAt(origin + ivec2(1, row), upper ? depths1.x : depths1.w);
+    column3 = gsSampleAt(origin + ivec2(2, row), upper ? depths1.y : depths1.z);
+    column4 = gsSampleAt(origin + ivec2(3, row), upper ? depths2.x : depths2.w);
+    column5 = ends ? gsSampleAt(origin + ivec2(4, row), upper ? depths2.y : depths2.z) : vec4(0.0);
+}
+
+// Marks the current row's four pixels (columns 0 to 3 of `at`), then moves up: `at` becomes the row below and
+// `above` the current row.
+void gsMarkRow(inout vec4 below1, inout vec4 below2, inout vec4 below3, inout vec4 below4, inout vec4 at0,
+               inout vec4 at1, inout vec4 at2, inout vec4 at3, inout vec4 at4, inout vec4 at5, vec4 above0,
+               vec4 above1, vec4 above2, vec4 above3, vec4 above4, vec4 above5) {
+    gsMarkPixel(at1, at0, at2, below1, above1);
+    gsMarkPixel(at2, at1, at3, below2, above2);
+    gsMarkPixel(at3, at2, at4, below3, above3);
+    gsMarkPixel(at4, at3, at5, below4, above4);
+    below1 = at1;
+    below2 = at2;
+    below3 = at3;
+    below4 = at4;
+    at0 = above0;
+    at1 = above1;
+    at2 = above2;
+    at3 = above3;
+    at4 = above4;
+    at5 = above5;
+}
+
 // Each invocation marks a block of 4x4 pixels (neighbours mostly ask for the same page, so one atomic serves a run
 // of them), row by row, holding the rows below, at and above in registers: every position of the block and its
 // border is reconstructed once, not once for each pixel that reads it, and no array is indexed (a software
-// rasteriser keeps an invocation's indexed arrays in memory). VirtualShadowMaps dispatches groups of 8x8.
+// rasteriser keeps an invocation's indexed arrays in memory). The depths come two rows at a time by 2x2 gathers,
+// a quarter of the fetches of one texel each, and the rows are written out rather than looped over: on llvmpipe
+// each made the marking markedly cheaper (docs/SHADOWS.md, "Virtual maps"). VirtualShadowMaps dispatches groups
+// of 8x8.
 void main() {
     ivec2 origin = ivec2(gl_GlobalInvocationID.xy) * 4;
-    // Columns -1 to 4 of the block: the row below the current one needs only columns 0-3.
-    vec4 below1 = gsSampleAt(origin + ivec2(0, -1));
-    vec4 below2 = gsSampleAt(origin + ivec2(1, -1));
-    vec4 below3 = gsSampleAt(origin + ivec2(2, -1));
-    vec4 below4 = gsSampleAt(origin + ivec2(3, -1));
-    vec4 at0 = gsSampleAt(origin + ivec2(-1, 0));
-    vec4 at1 = gsSampleAt(origin + ivec2(0, 0));
-    vec4 at2 = gsSampleAt(origin + ivec2(1, 0));
-    vec4 at3 = gsSampleAt(origin + ivec2(2, 0));
-    vec4 at4 = gsSampleAt(origin + ivec2(3, 0));
-    vec4 at5 = gsSampleAt(origin + ivec2(4, 0));
-    for (int dy = 0; dy < 4; ++dy) {
-        // The row above needs its ends only when it becomes the current row; the block's top border never does.
-        bool inside = dy < 3;
-        vec4 above0 = inside ? gsSampleAt(origin + ivec2(-1, dy + 1)) : vec4(0.0);
-        vec4 above1 = gsSampleAt(origin + ivec2(0, dy + 1));
-        vec4 above2 = gsSampleAt(origin + ivec2(1, dy + 1));
-        vec4 above3 = gsSampleAt(origin + ivec2(2, dy + 1));
-        vec4 above4 = gsSampleAt(origin + ivec2(3, dy + 1));
-        vec4 above5 = inside ? gsSampleAt(origin + ivec2(4, dy + 1)) : vec4(0.0);
-        gsMarkPixel(at1, at0, at2, below1, above1);
-        gsMarkPixel(at2, at1, at3, below2, above2);
-        gsMarkPixel(at3, at2, at4, below3, above3);
-        gsMarkPixel(at4, at3, at5, below4, above4);
-        below1 = at1;
-        below2 = at2;
-        below3 = at3;
-        below4 = at4;
-        at0 = above0;
-        at1 = above1;
-        at2 = above2;
-        at3 = above3;
-        at4 = above4;
-        at5 = above5;
-    }
+    vec4 depths0, depths1, depths2;
+    // Rows -1 and 0: the row below the first needs only columns 0-3.
+    gsGatherRows(origin, -1, depths0, depths1, depths2);
+    vec4 unused, below1, below2, below3, below4;
+    gsSampleRow(origin, -1, depths0, depths1, depths2, false, false, unused, below1, below2, below3, below4, unused);
+    vec4 at0, at1, at2, at3, at4, at5;
+    gsSampleRow(origin, 0, depths0, depths1, depths2, true, true, at0, at1, at2, at3, at4, at5);
+    // Rows 1 to 4, each the row above the current one; the block's top border, row 4, needs no ends.
+    vec4 above0, above1, above2, above3, above4, above5;
+    gsGatherRows(origin, 1, depths0, depths1, depths2);
+    gsSampleRow(origin, 1, depths0, depths1, depths2, false, true, above0, above1, above2, above3, above4, above5);
+    gsMarkRow(below1, below2, below3, below4, at0, at1, at2, at3, at4, at5, above0, above1, above2, above3, above4,
+              above5);
+    gsSampleRow(origin, 2, depths0, depths1, depths2, true, true, above0, above1, above2, above3, above4, above5);
+    gsMarkRow(below1, below2, below3, below4, at0, at1, at2, at3, at4, at5, above0, above1, above2, above3, above4,
+              above5);
+    gsGatherRows(origin, 3, depths0, depths1, depths2);
+    gsSampleRow(origin, 3, depths0, depths1, depths2, false, true, above0, above1, above2, above3, above4, above5);
+    gsMarkRow(below1, below2, below3, below4, at0, at1, at2, at3, at4, at5, above0, above1, above2, above3, above4,
+              above5);
+    gsSampleRow(origin, 4, depths0, depths1, depths2, true, false, above0, above1, above2, above3, above4, above5);
+    gsMarkRow(below1, below2, below3, below4, at0, at1, at2, at3, at4, at5, above0, above1, above2, above3, above4,
+              above5);
 }
