@@ -69,7 +69,8 @@ Shaded shaded(const content::LoadedScene& loaded, ShadowSettings settings, const
     const engine::ShaderVariantKey bits =
         shadows.variantBits(engine::DrawContext{frame, engine::kNoEntity, mesh});
     const engine::ShaderVariantKey vertexLayouts = engine.variants().flag("GS_SHADOW_LAYOUT_SINGLE") |
-                                                   engine.variants().flag("GS_SHADOW_LAYOUT_CASCADES");
+                                                   engine.variants().flag("GS_SHADOW_LAYOUT_CASCADES") |
+                                                   engine.variants().flag("GS_SHADOW_LAYOUT_VIRTUAL");
     return {target.readPixels(), (bits & engine.variants().flag("GS_SHADOW_ORTHOGRAPHIC")) != 0,
             (bits & vertexLayouts) != 0};
 }
@@ -187,6 +188,7 @@ struct ProjectionCase {
     ShadowTechnique technique;
     int cascadeCount = 0;
     bool addSun = false; // a low sun beside the scene's own lights: its map is projected in the vertex stage
+    MapAllocation maps = MapAllocation::Fitted;
 };
 
 void PrintTo(const ProjectionCase& c, std::ostream* out) {
@@ -219,6 +221,7 @@ TEST_P(VertexProjection, SameLookupsAsFragmentStage) {
         settings.technique = c.technique;
         settings.resolution = 512;
         settings.cascadeCount = c.cascadeCount;
+        settings.mapAllocation = c.maps;
         settings.debugView = view;
         const std::string what = c.name + " " + std::string(toString(view));
         const Shaded vertex = shaded(loaded, settings);
@@ -401,19 +404,25 @@ INSTANTIATE_TEST_SUITE_P(
 
 // knob: one directional map; outdoor: three cascades; spheres: a spot map; room: a sun's map beside two point
 // lights' cube faces (which the fragment stage projects), so the vertex stage's per-light outputs are indexed
-// past lights it does not project.
+// past lights it does not project; and virtual maps: a sun's clipmap levels, from its finest level's
+// projection, on a small model, a large ground and beside a spot light's virtual map.
 INSTANTIATE_TEST_SUITE_P(
     , VertexProjection,
-    ::testing::Values(ProjectionCase{"knob_slope_scaled", "knob", ShadowTechnique::SlopeScaledBias},
-                      ProjectionCase{"knob_gsm", "knob", ShadowTechnique::Gsm},
-                      ProjectionCase{"knob_normal_offset", "knob", ShadowTechnique::NormalOffset},
-                      ProjectionCase{"outdoor_cascades_gsm", "outdoor", ShadowTechnique::Gsm, 3},
-                      ProjectionCase{"outdoor_cascades_receiver_plane", "outdoor",
-                                     ShadowTechnique::ReceiverPlaneBias, 3},
-                      ProjectionCase{"spheres_spot_gsm", "spheres", ShadowTechnique::Gsm},
-                      ProjectionCase{"spheres_spot_normal_offset", "spheres", ShadowTechnique::NormalOffset},
-                      ProjectionCase{"room_sun_and_points_slope_scaled", "room",
-                                     ShadowTechnique::SlopeScaledBias, 0, true}),
+    ::testing::Values(
+        ProjectionCase{"knob_slope_scaled", "knob", ShadowTechnique::SlopeScaledBias},
+        ProjectionCase{"knob_gsm", "knob", ShadowTechnique::Gsm},
+        ProjectionCase{"knob_normal_offset", "knob", ShadowTechnique::NormalOffset},
+        ProjectionCase{"outdoor_cascades_gsm", "outdoor", ShadowTechnique::Gsm, 3},
+        ProjectionCase{"outdoor_cascades_receiver_plane", "outdoor", ShadowTechnique::ReceiverPlaneBias, 3},
+        ProjectionCase{"spheres_spot_gsm", "spheres", ShadowTechnique::Gsm},
+        ProjectionCase{"spheres_spot_normal_offset", "spheres", ShadowTechnique::NormalOffset},
+        ProjectionCase{"room_sun_and_points_slope_scaled", "room", ShadowTechnique::SlopeScaledBias, 0, true},
+        ProjectionCase{"knob_virtual_slope_scaled", "knob", ShadowTechnique::SlopeScaledBias, 0, false,
+                       MapAllocation::Virtual},
+        ProjectionCase{"outdoor_virtual_receiver_plane", "outdoor", ShadowTechnique::ReceiverPlaneBias, 0,
+                       false, MapAllocation::Virtual},
+        ProjectionCase{"spheres_virtual_sun_and_spot_gsm", "spheres", ShadowTechnique::Gsm, 0, true,
+                       MapAllocation::Virtual}),
     caseName);
 
 // knob: one directional map; outdoor: cascades; room: two point lights' cube faces.

@@ -88,8 +88,9 @@ struct alignas(16) ShadowBlock {
     /// The soft techniques' widest penumbra radius in each map, texels, four maps a vector: the plan's reach,
     /// or the wider one the map's fit holds (LightProjection::softReachTexels).
     glm::vec4 softReachTexels[kMaxMaps / 4];
-    /// A cascade's texture coordinates from its light's first cascade's, coord = first * scale + offset (xyz;
-    /// identity for other maps): the vertex stage projects into the first cascade only.
+    /// A cascade's or clipmap level's texture coordinates from its light's first cascade's or finest level's,
+    /// coord = first * scale + offset (xyz; identity for other maps): the vertex stage projects into the
+    /// first only.
     glm::vec4 cascadeScale[kMaxMaps];
     glm::vec4 cascadeOffset[kMaxMaps];
 };

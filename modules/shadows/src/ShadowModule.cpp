@@ -30,16 +30,28 @@ namespace {
 const engine::ProgramDesc kDepthProgram{"shadows/depth.vert", "shadows/depth.frag"};
 const engine::ProgramDesc kBlurProgram{"shadows/fullscreen.vert", "shadows/blur.frag"};
 
-/// Each cascade's texture coordinates from those of its light's first drawn cascade (whose slot goes to the
-/// light's kind.z), for the vertex stage's one projection per light. The cascades' matrices differ by an
-/// orthographic box around one light rotation, so the relation is a scale and an offset per axis; in double,
-/// so the first cascade's own is exactly the identity.
-void relateCascades(ShadowBlock& block) {
+/// Each cascade's or clipmap level's texture coordinates from those of its light's first drawn cascade or
+/// finest level (whose slot goes to, or already is, the light's kind.z), for the vertex stage's one
+/// projection per light. Their matrices differ by an orthographic box around one light rotation, so the
+/// relation is a scale and an offset per axis; in double, so the first's own is exactly the identity.
+void relateToFirstMap(ShadowBlock& block) {
     for (int slot = 0; slot < kMaxMaps; ++slot) {
         block.cascadeScale[slot] = glm::vec4(1.0f);
         block.cascadeOffset[slot] = glm::vec4(0.0f);
     }
+    const auto relate = [&](int first, int slot) {
+        const glm::dmat4 relation =
+            glm::dmat4(block.worldToShadow[slot]) * glm::inverse(glm::dmat4(block.worldToShadow[first]));
+        block.cascadeScale[slot] = glm::vec4(relation[0][0], relation[1][1], relation[2][2], 1.0);
+        block.cascadeOffset[slot] = glm::vec4(glm::dvec3(relation[3]), 0.0);
+    };
     for (LightMapsBlock& maps : block.lights) {
+        if (maps.kind.x == static_cast<int>(LightMapsKind::Virtual)) {
+            for (int level = 1; level < maps.kind.y; ++level) {
+                relate(maps.kind.z, maps.kind.z + level);
+            }
+            continue;
+        }
         if (maps.kind.x != static_cast<int>(LightMapsKind::Cascades)) {
             continue;
         }
@@ -51,15 +63,11 @@ void relateCascades(ShadowBlock& block) {
         if (first < 0) {
             continue;
         }
-        const glm::dmat4 fromFirst = glm::inverse(glm::dmat4(block.worldToShadow[first]));
         for (int cascade = 0; cascade < maps.kind.y; ++cascade) {
             const int slot = maps.slots[cascade];
-            if (slot < 0 || slot == first) {
-                continue;
+            if (slot >= 0 && slot != first) {
+                relate(first, slot);
             }
-            const glm::dmat4 relation = glm::dmat4(block.worldToShadow[slot]) * fromFirst;
-            block.cascadeScale[slot] = glm::vec4(relation[0][0], relation[1][1], relation[2][2], 1.0);
-            block.cascadeOffset[slot] = glm::vec4(glm::dvec3(relation[3]), 0.0);
         }
     }
 }
@@ -464,7 +472,7 @@ void ShadowModule::uploadBlock(const std::vector<LightMapsBlock>& lights, const 
             std::max(projection.softReachTexels, plan_.softReachTexels);
     }
     std::copy(lights.begin(), lights.end(), block.lights);
-    relateCascades(block);
+    relateToFirstMap(block);
     // View depth is -z in view space: minus the view matrix's third row.
     block.viewDepth = -glm::vec4(fit.view[0][2], fit.view[1][2], fit.view[2][2], fit.view[3][2]);
     block.msmDequantize = glm::inverse(glsl::GS_MSM_QUANTIZE);

@@ -51,8 +51,9 @@ layout(std140, binding = 1) uniform GsShadowBlock {
     ivec4 gsVirtualPages; // x pages per side of a level, y atlas tiles per row, z atlas side (texels)
     vec4 gsVirtualPage;   // x page side, y tile side, z border (texels), w 1 / atlas side
     vec4 gsShadowSoftReachTexels[GS_SHADOW_MAX_MAPS / 4]; // the soft techniques' widest radius per map, four a vector
-    // A cascade's map coordinates from its light's first cascade's, coord = first * scale + offset (xyz): the
-    // cascades share the light's rotation, so the vertex stage projects into the first alone.
+    // A cascade's or clipmap level's map coordinates from its light's first cascade's or finest level's,
+    // coord = first * scale + offset (xyz): they share the light's rotation, so the vertex stage projects into
+    // the first alone.
     vec4 gsShadowCascadeScale[GS_SHADOW_MAX_MAPS];
     vec4 gsShadowCascadeOffset[GS_SHADOW_MAX_MAPS];
 };

@@ -445,6 +445,18 @@ float gsShadowMapVisibility(int slot, GsShadowFragment fragment) {
     return gsShadowMapVisibilityAt(slot, fragment, gsShadowProjectFragment(slot, fragment));
 }
 
+#ifdef GS_SHADOW_LAYOUT_VIRTUAL
+// A clipmap level's projection of the fragment: the finest level's (`finest`) scaled and offset, as the levels
+// share the light's rotation and depth range; under GS_SHADOW_FRAGMENT_PROJECTION the level's own product.
+GsShadowProjection gsClipmapLevelProjection(int slot, GsShadowFragment fragment, GsShadowProjection finest) {
+#ifdef GS_SHADOW_VERTEX_PROJECTION
+    return gsShadowCascadeProjection(slot, finest);
+#else
+    return gsShadowProjectFragment(slot, fragment);
+#endif
+}
+#endif
+
 // Which map of light `lightIndex` was read, for the maps debug view: cascade index or cube face, -1 for none.
 int gsDebugMap = -1;
 
@@ -508,15 +520,20 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     if (kind == GS_SHADOW_LIGHT_VIRTUAL) {
         int levels = maps.kind.y;
         int firstSlot = maps.kind.z;
+#ifdef GS_SHADOW_VERTEX_PROJECTION
+        GsShadowProjection finest = fromVertex;
+#else
+        GsShadowProjection finest = gsShadowProjectFragment(firstSlot, fragment);
+#endif
         // Start at the finest level whose window holds the receiver: the windows double in radius around the
         // camera (up to a page off centre), so from the finest level's coordinates.
-        vec2 finest = (gsShadowMatrix[firstSlot] * vec4(worldPosition, 1.0)).xy - 0.5;
-        float reach = max(abs(finest.x), abs(finest.y)) / (0.5 - 1.0 / float(gsVirtualPages.x));
+        vec2 centred = finest.clip.xy - 0.5;
+        float reach = max(abs(centred.x), abs(centred.y)) / (0.5 - 1.0 / float(gsVirtualPages.x));
         int level = min(reach > 1.0 ? int(ceil(log2(reach))) : 0, levels - 1);
         // That level's entry under the receiver names the finest resident level over it: go there at once
         // rather than through a whole lookup that would only name it.
         vec2 window =
-            (gsShadowMatrix[firstSlot + level] * vec4(worldPosition, 1.0)).xy * gsShadowTexel[firstSlot + level].x;
+            gsClipmapLevelProjection(firstSlot + level, fragment, finest).clip.xy * gsShadowTexel[firstSlot + level].x;
         ivec2 page = clamp(gsVirtualPageAt(window), ivec2(0), ivec2(gsVirtualPages.x - 1));
         uint entry = texelFetch(gsShadowPageTable, ivec3(page, maps.kind.w + level), 0).r;
         level = entry != 0u ? gsVirtualEntryLevel(entry) : level;
@@ -526,7 +543,8 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
         for (int attempt = 0; attempt < levels && level < levels; ++attempt) {
             gsVirtualPageLayer = maps.kind.w + level;
             gsVirtualLevelIndex = level;
-            visibility = gsShadowMapVisibility(firstSlot + level, fragment);
+            visibility = gsShadowMapVisibilityAt(firstSlot + level, fragment,
+                                                 gsClipmapLevelProjection(firstSlot + level, fragment, finest));
             if (visibility >= 0.0) {
                 gsDebugMap = gsDebugMap < 0 ? level : gsDebugMap;
                 break;
