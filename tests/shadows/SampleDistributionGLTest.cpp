@@ -167,6 +167,38 @@ TEST_P(GpuReduction, EqualsItsCpuMirror) {
     EXPECT_LE(probe.bounds->slices[0].samples, static_cast<std::uint32_t>(size.x * size.y));
 }
 
+// The reduction gathers the depth image through texture unit 0: a sampler left bound there with comparison
+// and linear filtering, as a fitted map's lookup leaves one, changes no bound.
+TEST(GpuReductionSampler, IgnoresASamplerLeftOnItsUnit) {
+    glTestContext();
+    engine::EntityId camera = engine::kNoEntity;
+    const engine::Scene scene = mergedApron(camera);
+    const auto reduced = [&](GLuint sampler) {
+        engine::Engine engine;
+        engine.renderer().shareViewDepth = false;
+        auto& probe = static_cast<SampleProbe&>(engine.addModule(std::make_unique<SampleProbe>()));
+        engine::RenderTarget target({131, 67});
+        glBindSampler(0, sampler);
+        engine.renderFrame(scene, camera, target);
+        glBindSampler(0, 0);
+        return probe.bounds;
+    };
+    GLuint sampler = 0;
+    glCreateSamplers(1, &sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LESS);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    const auto left = reduced(sampler);
+    glDeleteSamplers(1, &sampler);
+    const auto clean = reduced(0);
+    ASSERT_TRUE(clean && left);
+    EXPECT_EQ(left->viewDepth, clean->viewDepth);
+    EXPECT_EQ(left->slices[0].samples, clean->slices[0].samples);
+    EXPECT_EQ(left->slices[0].min, clean->slices[0].min);
+    EXPECT_EQ(left->slices[0].max, clean->slices[0].max);
+}
+
 INSTANTIATE_TEST_SUITE_P(SampleDistributionGLTest, GpuReduction,
                          ::testing::Values(glm::ivec2(320, 240), glm::ivec2(131, 67), glm::ivec2(9, 7)),
                          [](const ::testing::TestParamInfo<glm::ivec2>& param) {

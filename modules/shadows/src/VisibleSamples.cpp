@@ -58,6 +58,8 @@ VisibleSamples::reduce(const engine::gl::Program& program) {
     program.set("uTexelToLight", texelToLight_);
     glUniform4fv(program.uniformLocation("uTexelToViewDepth"), 1, glm::value_ptr(texelToViewDepth_));
     glBindTextureUnit(0, depthTexture());
+    // The gathers read the texture's own nearest filtering, not a comparison sampler left on the unit.
+    glBindSampler(0, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bounds_->id());
     // A group of 8x8 invocations covers 128x128 texels, 16x16 each (samples.comp's GS_GROUP_SIDE, GS_BLOCK).
     constexpr int kGroupTexels = 8 * 16;
