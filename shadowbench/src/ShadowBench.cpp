@@ -403,6 +403,7 @@ void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSett
     engine::RenderTarget target(options_.size);
     double sum = 0.0;
     double largest = 0.0;
+    int kept = 0;
     std::vector<double> times;
     for (int frame = 0; frame <= options_.walkFrames; ++frame) {
         pose.translation = glm::vec3(start[3]) + forward * (kStepPerFrame * static_cast<float>(frame));
@@ -414,8 +415,10 @@ void ShadowBench::measureWalk(const BenchScene& scene, const shadows::ShadowSett
             const auto texels = static_cast<double>(module.stats().pages.texelsRendered);
             sum += texels;
             largest = std::max(largest, texels);
+            kept += module.stats().keptMaps ? 1 : 0;
         }
     }
+    result.walkKeptFrames = kept;
     if (options_.timing && !times.empty()) {
         result.walkFrame = summariseTimes(times);
     }
@@ -959,6 +962,7 @@ std::string resultsJson(const std::vector<BenchResult>& results, const std::vect
              {"stillFrameMs", timingJson(r.stillFrame)},
              {"stillFrameKeptMaps", r.stillFrameKeptMaps},
              {"walkFrameMs", r.walkFrame.median < 0.0 ? nlohmann::json() : timingJson(r.walkFrame)},
+             {"walkKeptFrames", r.walkKeptFrames < 0 ? nlohmann::json() : nlohmann::json(r.walkKeptFrames)},
              {"peer", r.peerClass.empty() ? nlohmann::json() : nlohmann::json(r.peerClass)},
              {"naive", r.peerClass.empty() && shadows::traitsOf(r.config.settings.technique).naive},
              {"peerUnlitReceivers", r.peerUnlitReceivers},

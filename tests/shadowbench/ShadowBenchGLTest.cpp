@@ -316,7 +316,7 @@ TEST(TexelDensityGLTest, TheDensityViewShowsTheFootprintsTheBenchMeasures) {
 // pixel (up to 0.7 pixels off the reprojected point) straddles where the truth's edge is not. Six frames move
 // the image about 2 pixels per step, so a comparison with the same pixel instead of the reprojected one finds
 // no pixel of the same surface and measures 0; one that ignores the truth measures 1.5e-3 with the 2048² map.
-TEST(WalkGLTest, TimesEveryConfigurationsWalkAndCountsVirtualPages) {
+TEST(WalkGLTest, TimesEveryConfigurationsWalkAndCountsVirtualPagesAndKeptMaps) {
     const engine::HeadlessContext& context = glTestContext();
     BenchOptions options;
     options.size = {160, 120};
@@ -334,6 +334,13 @@ TEST(WalkGLTest, TimesEveryConfigurationsWalkAndCountsVirtualPages) {
         EXPECT_LE(walkingFitted.walkFrame.min, walkingFitted.walkFrame.median);
         EXPECT_LE(walkingFitted.walkFrame.median, walkingFitted.walkFrame.max);
         EXPECT_LT(walkingFitted.walkTexelsPerFrame, 0.0); // pages: virtual maps only
+        // The knob's map holds its whole shadow, which stays in view: each step keeps it.
+        EXPECT_EQ(walkingFitted.walkKeptFrames, options.walkFrames);
+        BenchResult walkingRedrawn;
+        shadows::ShadowSettings redrawing = fitted;
+        redrawing.reuseUnchangedMaps = false;
+        bench.measureWalk(*scene, redrawing, walkingRedrawn);
+        EXPECT_EQ(walkingRedrawn.walkKeptFrames, 0);
         BenchResult walkingVirtual;
         walkingVirtual.virtualMaps = true;
         bench.measureWalk(*scene, virtualMaps, walkingVirtual);

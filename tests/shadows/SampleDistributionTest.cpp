@@ -6,6 +6,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -227,6 +229,44 @@ TEST(SampleDistributionTest, SnappedFitIgnoresSubTexelMotionOfTheSamples) {
     const glm::vec4 moved = b.worldToShadow * origin;
     const float shift = (moved.x / moved.w) * 1024.0f;
     EXPECT_NEAR(shift, std::round(shift), 1e-2f);
+}
+
+TEST(SampleDistributionTest, AnEarlierSquareIsKeptWhileItHoldsTheSamplesWithTheirMargin) {
+    // A camera moving along: the samples shift, and the square drawn before stays where it is while they and
+    // their margin (the kernels' reach) lie within it, so the map it holds stays valid.
+    const glm::vec3 direction = glm::normalize(glm::vec3(0.3f, -0.4f, -0.8f));
+    const float margin = 2.0f;
+    const auto shifted = [](float dx, float width) {
+        return rect({dx, 0.0f, -40.0f}, {dx + width, 20.0f, -5.0f});
+    };
+    const LightProjection first = fitToSamples(direction, shifted(0.0f, 30.0f), {}, 1024, margin, true);
+    ASSERT_TRUE(first.valid);
+    const float texel = first.texelScale;
+    EXPECT_EQ(first.square.z, texel * 1024.0f);
+    // How far the samples may move right with their margin still inside the square.
+    const float room = first.square.x + 0.5f * first.square.z - 30.0f - margin * texel;
+    ASSERT_GT(room, texel);
+    const std::array<LightProjection, 1> kept{first};
+    const LightProjection inside = fitToSamples(direction, shifted(room - 0.25f * texel, 30.0f), {}, 1024,
+                                                margin, true, {}, nullptr, kept);
+    EXPECT_EQ(inside.square, first.square);
+    EXPECT_EQ(inside.worldToShadow, first.worldToShadow);
+    // The same samples fitted afresh centre a square of their own.
+    EXPECT_NE(fitToSamples(direction, shifted(room - 0.25f * texel, 30.0f), {}, 1024, margin, true).square,
+              first.square);
+    // A quarter texel further, the margin would cross the edge: a square of their own.
+    const LightProjection beyond = fitToSamples(direction, shifted(room + 0.25f * texel, 30.0f), {}, 1024,
+                                                margin, true, {}, nullptr, kept);
+    EXPECT_NE(glm::vec2(beyond.square), glm::vec2(first.square));
+    EXPECT_EQ(beyond.square.z, first.square.z);
+    // Samples that need another size, or a map of another resolution, keep nothing either.
+    const LightProjection wider =
+        fitToSamples(direction, shifted(1.0f, 36.0f), {}, 1024, margin, true, {}, nullptr, kept);
+    EXPECT_NE(wider.square.z, first.square.z);
+    const LightProjection finer =
+        fitToSamples(direction, shifted(texel, 30.0f), {}, 2048, margin, true, {}, nullptr, kept);
+    EXPECT_NE(finer.texelScale, first.texelScale);
+    EXPECT_NE(glm::vec2(finer.square), glm::vec2(first.square));
 }
 
 TEST(SampleDistributionTest, NoSamplesOrNonFiniteOnesGiveNoMap) {

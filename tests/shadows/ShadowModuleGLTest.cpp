@@ -323,6 +323,72 @@ INSTANTIATE_TEST_SUITE_P(
                        }}),
     [](const ::testing::TestParamInfo<MapInputChange>& change) { return std::string(change.param.name); });
 
+// A moving view keeps whole maps where they were placed while that holds its samples at the same texel size:
+// the fit lands on the same texel grid, so each frame shows what one that redraws its maps does (but where
+// the depth range's steps differ); a view that leaves the placement draws them again.
+TEST(ShadowModuleGLTest, AMovingViewKeepsItsMapsWhileTheirPlacementsHoldItsSamples) {
+    glTestContext();
+    engine::Scene scene = boxOnPlaneUnderASun();
+    const glm::ivec2 size{96, 72};
+    ShadowSettings settings;
+    settings.debugView = ShadowDebugView::Visibility;
+    engine::Engine engine;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    ShadowSettings redrawing = settings;
+    redrawing.reuseUnchangedMaps = false;
+    const auto redrawn = [&] {
+        engine::Engine reference;
+        reference.addModule(std::make_unique<ShadowModule>(redrawing));
+        return visibilityImage(reference, scene, size);
+    };
+    const auto differing = [](const std::vector<float>& a, const std::vector<float>& b) {
+        std::size_t count = 0;
+        for (std::size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4) {
+            count += std::abs(a[i] - b[i]) > 0.5f / 255.0f ? 1 : 0;
+        }
+        return count;
+    };
+    const engine::EntityId camera = *scene.firstCamera();
+    const glm::vec3 start = scene.entity(camera).transform.translation;
+    visibilityImage(engine, scene, size);
+    int kept = 0;
+    int drawnAfterKept = 0; // frames that left the placement the frames before kept
+    bool keptLast = false;
+    for (int step = 1; step <= 40; ++step) {
+        scene.entity(camera).transform.translation =
+            start + glm::vec3(0.05f * static_cast<float>(step), 0.0f, 0.0f);
+        const std::vector<float> image = visibilityImage(engine, scene, size);
+        const ShadowStats stats = module.stats();
+        EXPECT_FALSE(stats.reusedMaps) << step;
+        if (stats.keptMaps) {
+            ++kept;
+            EXPECT_EQ(stats.casters.drawCalls, 0u) << step;
+        } else {
+            drawnAfterKept += keptLast ? 1 : 0;
+        }
+        keptLast = stats.keptMaps;
+        const std::size_t differ = differing(image, redrawn());
+        EXPECT_LE(differ, static_cast<std::size_t>(size.x * size.y) / 1000) << step;
+    }
+    std::cout << "[ measured ] 40 steps of 5 cm: " << kept << " kept the maps, " << drawnAfterKept
+              << " left a kept placement\n";
+    EXPECT_GE(kept, 20) << "most small steps stay within the placement";
+    EXPECT_GE(drawnAfterKept, 1) << "the walk leaves a placement";
+    // A still frame after a kept one keeps everything, as after a drawn one.
+    visibilityImage(engine, scene, size);
+    EXPECT_TRUE(module.stats().reusedMaps);
+    scene.entity(camera).transform = engine::Transform::lookAt({1, 4, 6}, {0, 0, 0});
+    const std::vector<float> moved = visibilityImage(engine, scene, size);
+    EXPECT_FALSE(module.stats().keptMaps) << "a view beyond the placement";
+    EXPECT_EQ(moved, redrawn());
+    // Without reuse, every frame draws its maps, however little the view moves.
+    module.setSettings(redrawing);
+    visibilityImage(engine, scene, size);
+    scene.entity(camera).transform.translation += glm::vec3(0.02f, 0.0f, 0.0f);
+    visibilityImage(engine, scene, size);
+    EXPECT_FALSE(module.stats().keptMaps) << "reuseUnchangedMaps off";
+}
+
 TEST(ShadowModuleGLTest,
      MapsAreRedrawnAfterASettingsChangeAndEveryFrameWithoutReuseVirtualOnesKeptAfterAnIdleUpdate) {
     glTestContext();

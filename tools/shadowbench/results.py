@@ -733,6 +733,8 @@ def virtual_table(timed):
             walking_cell = "–"
             if walking and r is not peer:
                 walking_cell = f"{walking['median']:.1f}" + (f" ({walking['median'] / frame_ms(peer):.2f}×)" if peer else "")
+                if not pages and r.get("walkKeptFrames") is not None:
+                    walking_cell += f", {r['walkKeptFrames']} kept"
                 if peer:
                     tally = summary["walkingVirtual" if pages else "walkingFitted"]
                     tally[0] += walking["median"] <= frame_ms(peer)
@@ -766,7 +768,8 @@ def virtual_section(timed, suns):
                "frame while the camera walks 1.5 units/s at 30 frames/s for "
                f"{timed.get('walkFrames', 30)} frames, in texels (borders included) as multiples of the lit receiver "
                "pixels. Times are the static view's frames (no page drawn) and, walking, the median of the walk's frames "
-               "after its first (fitted maps draw theirs whole each step, virtual maps the pages each step newly asks "
+               "after its first (fitted maps draw theirs whole where a step leaves their placements and keep them where "
+               "it does not, the frames that kept them counted; virtual maps draw the pages each step newly asks "
                f"for), {timed['timingMethod']}; the peer's are from its own run of the same scene, camera and light.\n")
     lines, summary = virtual_table(timed)
     out.append("\n".join(lines) + "\n")

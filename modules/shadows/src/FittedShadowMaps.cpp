@@ -77,11 +77,21 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
                                     settings_.fittedTexelPixels / (1.0f + 2.0f * plan_.filterRadiusTexels),
                                     frame.fit.projection, imageHeight)
                    : settings_.resolution;
+    // Where the maps may stay as a camera moves, the placements drawn last are kept while they hold its
+    // samples.
+    std::vector<LightProjection> kept;
+    if (settings_.reuseUnchangedMaps && frame.fitIsCamera) {
+        for (const MapSlot& slot : drawn_) {
+            if (slot.lightIndex == light.index && slot.resolution == resolution) {
+                kept.push_back(slot.projection);
+            }
+        }
+    }
     const auto fitted = [&](int cascade) {
         const auto slice = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
         LightProjection projection =
             fitToSamples(light.direction, slices[slice], frame.boxes, resolution, hardMargin,
-                         settings_.texelSnapping, softMargin(light), &bounds->slices[slice]);
+                         settings_.texelSnapping, softMargin(light), &bounds->slices[slice], kept);
         if (!frame.fitIsCamera) { // the pixels shaded are not the fit's samples
             projection.drawnRegion = LightProjection{}.drawnRegion;
         }
@@ -189,6 +199,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
     }
     if (slots.empty()) {
         maps_.reset(); // nothing casts this frame: give the memory back
+        drawn_.clear();
     } else {
         // The arrays hold exactly the maps in use, at the side the frame's fits took; a change in either
         // reallocates them.
@@ -197,6 +208,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
                          })->resolution;
         if (!maps_ || maps_->layers() != static_cast<int>(slots.size()) || maps_->depth.size().x != side) {
             maps_ = std::make_unique<ShadowMapArray>(side, static_cast<int>(slots.size()), plan_);
+            drawn_.clear();
         }
     }
 }
@@ -223,7 +235,27 @@ engine::DrawnMeshes FittedShadowMaps::render(const engine::Scene& scene, const e
             glDisable(GL_SCISSOR_TEST);
         }
     }
+    drawn_.assign(slots.begin(), slots.end());
     return drawnMeshes;
+}
+
+bool FittedShadowMaps::holds(std::span<const MapSlot> slots) const {
+    if (!maps_ || slots.empty() || drawn_.size() != slots.size()) {
+        return false;
+    }
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        const LightProjection& now = slots[i].projection;
+        const LightProjection& drawn = drawn_[i].projection;
+        const bool within =
+            glm::all(glm::greaterThanEqual(glm::vec2(now.drawnRegion), glm::vec2(drawn.drawnRegion))) &&
+            glm::all(glm::lessThanEqual(glm::vec2(now.drawnRegion.z, now.drawnRegion.w),
+                                        glm::vec2(drawn.drawnRegion.z, drawn.drawnRegion.w)));
+        if (slots[i].lightIndex != drawn_[i].lightIndex || slots[i].resolution != drawn_[i].resolution ||
+            now.worldToShadow != drawn.worldToShadow || now.depthRange != drawn.depthRange || !within) {
+            return false;
+        }
+    }
+    return true;
 }
 
 void FittedShadowMaps::blurMoments(const engine::gl::Program& blur, GLuint unit) {

@@ -27,6 +27,7 @@ public:
                   std::vector<LightMapsBlock>& lights) override;
     engine::DrawnMeshes render(const engine::Scene& scene, const engine::gl::Program& program,
                                std::span<const MapSlot> slots, const CasterOmissions& omissions) override;
+    [[nodiscard]] bool holds(std::span<const MapSlot> slots) const override;
     void blurMoments(const engine::gl::Program& blur, GLuint unit) override;
     [[nodiscard]] const ShadowMapArray* sampled() const override { return maps_.get(); }
     [[nodiscard]] std::size_t bytes() const override;
@@ -54,6 +55,7 @@ private:
     VisibleSamples& samples_;
     OnceWarnings& warnings_;
     std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
+    std::vector<MapSlot> drawn_;           // the slots maps_ was last drawn for; empty when it holds none
 };
 
 } // namespace shadows

@@ -370,7 +370,8 @@ glm::dmat4 textureRectClip(glm::dvec2 low, glm::dvec2 size) {
 
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
-                             bool snapToTexels, SoftMargin soft, const LightRect* visible) {
+                             bool snapToTexels, SoftMargin soft, const LightRect* visible,
+                             std::span<const LightProjection> kept) {
     LightProjection result;
     const glm::vec3 size = samples.max - samples.min;
     if (samples.empty() || resolution < 16 || !(size.x >= 0.0f && size.y >= 0.0f && size.z >= 0.0f) ||
@@ -413,6 +414,21 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
                    std::max(static_cast<float>(resolution) - 2.0f * slack, 1.0f);
     if (snapToTexels) {
         snapSquare(extent, centre, resolution);
+        // An earlier square of this side on this grid keeps its place while it gives the samples the margin
+        // the new one would (all but the snapping's texel): the map drawn there holds every texel they read.
+        const float margin = (slack - 1.0f) * extent / static_cast<float>(resolution);
+        for (const LightProjection& earlier : kept) {
+            const glm::vec2 half(0.5f * earlier.square.z);
+            if (earlier.valid && earlier.square.z == extent &&
+                earlier.texelScale == extent / static_cast<float>(resolution) &&
+                glm::all(glm::greaterThanEqual(glm::vec2(samples.min) - margin,
+                                               glm::vec2(earlier.square) - half)) &&
+                glm::all(
+                    glm::lessThanEqual(glm::vec2(samples.max) + margin, glm::vec2(earlier.square) + half))) {
+                centre = glm::vec2(earlier.square);
+                break;
+            }
+        }
     }
     float nearest = nearestCaster(extent, centre);
     float farthest = samples.min.z;
@@ -427,6 +443,7 @@ LightProjection fitToSamples(const glm::vec3& direction, const LightRect& sample
     constexpr float kReceiverOffsetTexels = 2.0f;
     completeOrthographicMap(result, centre, extent, nearest, farthest, depthMargin, resolution,
                             Aabb{samples.min, samples.max}, kReceiverOffsetTexels);
+    result.square = glm::vec3(centre, extent);
     // A sample's lookup lies within its offsets of it and reads within the kernels' reach of that.
     const float reach = (slack + kReceiverOffsetTexels) * result.texelScale;
     const glm::vec2 origin = centre - glm::vec2(0.5f * extent);

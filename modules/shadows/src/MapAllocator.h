@@ -74,6 +74,14 @@ public:
     /// (drawCasters).
     virtual engine::DrawnMeshes render(const engine::Scene& scene, const engine::gl::Program& program,
                                        std::span<const MapSlot> slots, const CasterOmissions& omissions) = 0;
+    /// @brief Whether the maps as last drawn are what `slots` (this frame's allocation) would draw, the
+    /// casters being unchanged: the same maps at the same placements, depth ranges and sides, none drawing a
+    /// texel the last drawing left out. Then a moving view keeps them. Whole maps only (virtual maps keep
+    /// their pages themselves).
+    [[nodiscard]] virtual bool holds(std::span<const MapSlot> slots) const {
+        static_cast<void>(slots);
+        return false;
+    }
     /// @brief Blurs the moments drawn this frame with `blur` (shaders/shadows/blur.frag, in use, a fullscreen
     /// triangle bound), sampling through texture unit `unit`.
     virtual void blurMoments(const engine::gl::Program& blur, GLuint unit) = 0;

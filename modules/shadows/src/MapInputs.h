@@ -35,6 +35,11 @@ struct MapInputs {
     std::vector<Mesh> meshes;
 
     bool operator==(const MapInputs&) const = default;
+    /// Whether `other` has the same lights and meshes, whatever the view: what the maps hold is then the same
+    /// wherever they are placed alike.
+    [[nodiscard]] bool sameScene(const MapInputs& other) const {
+        return lights == other.lights && meshes == other.meshes;
+    }
 };
 
 } // namespace shadows

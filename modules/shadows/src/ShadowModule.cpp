@@ -116,6 +116,7 @@ ShadowStats ShadowModule::stats() const {
     ShadowStats stats;
     stats.shadowMaps = static_cast<int>(slots_.size());
     stats.reusedMaps = reusedMaps_;
+    stats.keptMaps = keptMaps_;
     stats.sharedViewDepth = sharedViewDepth_;
     stats.casters = casters_;
     stats.fitMilliseconds = fitMilliseconds_;
@@ -198,6 +199,7 @@ void ShadowModule::releaseResources() {
     uploadedFrame_.clear();
     drawnFrom_.reset();
     reusedMaps_ = false;
+    keptMaps_ = false;
 }
 
 MapAllocator& ShadowModule::allocation() {
@@ -310,10 +312,11 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     reusedMaps_ = reusable && allocation_ && drawnFrom_ && *drawnFrom_ == inputs &&
                   (!allocation_->servedVirtualMaps() || allocation_->pageStats().rendered == 0);
     fitMilliseconds_ = mapsMilliseconds_ = partTimer_ ? 0.0 : -1.0;
+    keptMaps_ = false;
     if (reusedMaps_) {
         return;
     }
-    drawnFrom_.reset(); // until this frame's maps are drawn
+    const std::unique_ptr<MapInputs> drawnFrom = std::move(drawnFrom_); // until this frame's maps are drawn
     const auto timedPart = [&](double& milliseconds, const auto& part) {
         if (partTimer_) {
             partTimer_->begin();
@@ -326,7 +329,9 @@ void ShadowModule::renderPrePasses(const engine::FrameContext& frame) {
     const std::uint64_t sampleDraws = samples_->draws();
     timedPart(fitMilliseconds_, [&] { fitMaps(frame, inputs.fit, boxes, entities); });
     sharedViewDepth_ = samples_->draws() != sampleDraws && samples_->sharedDepth();
-    if (!slots_.empty()) {
+    // The view moved, but within the placements of the maps drawn last, nothing they hold having changed.
+    keptMaps_ = reusable && drawnFrom && drawnFrom->sameScene(inputs) && allocation_->holds(slots_);
+    if (!slots_.empty() && !keptMaps_) {
         timedPart(mapsMilliseconds_, [&] { drawMaps(frame); });
     }
     if (reusable) {

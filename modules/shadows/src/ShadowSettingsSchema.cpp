@@ -272,8 +272,10 @@ const std::vector<SettingRow>& rows() {
         {"reuseUnchangedMaps", "", "reuse unchanged maps",
          "Keep the last frame's maps when nothing they are drawn from changed (the view, its size, the "
          "lights, every mesh and its transform): a still view draws no map and runs no sample pass "
-         "(virtual maps: from the frame after one that drew no page). Off, every frame draws its fitted "
-         "maps and updates its virtual ones, as a moving camera does.",
+         "(virtual maps: from the frame after one that drew no page). A moving view keeps a fitted map "
+         "where it was placed while that holds the view's samples at the same texel size, and then draws "
+         "none either. Off, every frame draws its fitted maps and updates its virtual ones, as a camera "
+         "cut does.",
          BoolSetting{&S::reuseUnchangedMaps}, always},
         {"texelSnapping", "", "snap to texels",
          "Snap the directional light's frustum to whole texels so shadows do not shimmer.",

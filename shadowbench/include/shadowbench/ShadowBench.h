@@ -100,6 +100,9 @@ struct BenchResult {
     /// The walk's frames after the first, timed as `frame` is (negative medians when not timed or no walk):
     /// what a moving view's frame costs, with whatever the maps keep from the frame before.
     PassTiming walkFrame{-1.0, -1.0, -1.0};
+    /// The walk's frames after the first that kept the whole maps of the frame before
+    /// (shadows::ShadowStats::keptMaps); negative when there was no walk.
+    int walkKeptFrames = -1;
     /// Jittered PCF with early-out: fraction of covered pixels that took the full kernel (penumbra
     /// candidates); negative for every other configuration.
     double fullKernelFraction = -1.0;

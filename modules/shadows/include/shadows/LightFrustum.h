@@ -47,6 +47,9 @@ struct LightProjection {
     /// axis, or enlarged by the snapped extent, spends no fill beyond them. The whole map, (0, 0, 1, 1), for
     /// every other map.
     glm::vec4 drawnRegion{0.0f, 0.0f, 1.0f, 1.0f};
+    /// A directional map fitted to the samples: the light-space square it covers, its centre (x, y) and side
+    /// (z), which a later fit at the same side may keep (fitToSamples); zero for every other map.
+    glm::vec3 square{0.0f};
     /// False when nothing visible can receive a shadow from this light (no map needs drawing).
     bool valid = false;
 };
@@ -150,10 +153,13 @@ struct SoftMargin {
 /// Beyond the samples' box, less two texels for the receiver's own offsets, is the lit border. The casters
 /// are drawn within the margin and those two texels of `visible` (drawnRegion): every visible sample of the
 /// slice, of which `samples` are those a caster can shadow, so that each one's lookup reads what it did in a
-/// map drawn whole; `samples` where null. Invalid when `samples` is empty or not finite.
+/// map drawn whole; `samples` where null. The square of the first of `kept` (earlier fits) of the same side
+/// that holds the samples with the margins a new square would give them is kept, on the same texel grid, so
+/// a camera moving within it leaves the map as it was drawn. Invalid when `samples` is empty or not finite.
 LightProjection fitToSamples(const glm::vec3& direction, const LightRect& samples,
                              std::span<const Aabb> boxes, int resolution, float marginTexels,
-                             bool snapToTexels, SoftMargin soft = {}, const LightRect* visible = nullptr);
+                             bool snapToTexels, SoftMargin soft = {}, const LightRect* visible = nullptr,
+                             std::span<const LightProjection> kept = {});
 
 /// @brief Where a directional light shining along `direction` can shadow a receiver in the view of
 /// `cameraViewProjection`, as a light-space (lightView) xy box (z = 0): the part of each box the view can see

@@ -48,6 +48,10 @@ struct ShadowStats {
     /// Whether the last frame kept the maps of the frame before, nothing they are drawn from having changed
     /// (ShadowSettings::reuseUnchangedMaps): it drew no map and ran no sample pass.
     bool reusedMaps = false;
+    /// Whether the last frame's view moved but kept the whole maps of the frame before: its fit took their
+    /// placements, which held its samples, and nothing they are drawn from had changed
+    /// (ShadowSettings::reuseUnchangedMaps). It ran the sample pass and drew no map.
+    bool keptMaps = false;
     /// Whether the last frame's sample pass (the view's depth, to fit maps or mark pages) took the lighting
     /// pass's depth pre-pass (engine::ModuleHost::viewDepth) instead of drawing the view itself; false when
     /// it ran none.
@@ -178,6 +182,7 @@ private:
     std::map<GLuint, std::uint64_t> uploadedFrame_; // program -> frame whose uniforms it holds
     std::unique_ptr<MapInputs> drawnFrom_;          // what the fitted maps in place were drawn from
     bool reusedMaps_ = false;                       // this frame kept them
+    bool keptMaps_ = false;                         // this frame's moved view kept them
     bool sharedViewDepth_ = false;                  // this frame's sample pass took the view depth
     engine::DrawnMeshes casters_;                   // what this frame's caster pass drew
     std::optional<engine::PassTimer> partTimer_;    // times the fit and the maps apart (setPartTiming)

@@ -159,7 +159,7 @@ struct ShadowSettings {
     /// soft techniques, keep `resolution`.
     float fittedTexelPixels = 0.25f;
     /// Keeps the last frame's maps while nothing they are drawn from changes (virtual maps: once an update
-    /// drew no page).
+    /// drew no page); a moving view keeps whole maps while their placements hold its samples.
     bool reuseUnchangedMaps = true;
     /// Snaps directional frustums to whole texels (no shimmer).
     bool texelSnapping = true;
