@@ -255,7 +255,7 @@ if [ ${#only[@]} -gt 0 ]; then
 fi
 peer corpus/apron-merged.glb vdsm
 "$bench" $(printf -- '--scene %s ' "${corpus[@]}") --scene apron-merged --techniques default --resolutions 2048 \
-    --size 640x480 --frames 7 --peer "$work/osg" --out "$work/still"
+    --size 640x480 --frames 7 --walk 30 --peer "$work/osg" --out "$work/still"
 fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).

@@ -1054,7 +1054,11 @@ def still_section(still):
                "moving view does: the sample pass, the casters and the lighting pass. *Still*: the same view's "
                "frames after one that drew them, which keep them (`reuseUnchangedMaps`, the default; docs/SHADOWS.md, "
                "\"Kept while nothing changes\"); VDSM draws its map every frame either way, so *moving* is the like-for-"
-               f"like comparison and *still* what a view that stands still costs. Texels drawn: the part of the maps' texels "
+               "like comparison and *still* what a view that stands still costs. *Walking*: the camera walks forward "
+               f"1.5 units/s at 30 frames/s for {still.get('walkFrames', 0)} frames with the default settings, which keep "
+               "the maps while their placements hold the view's samples (docs/SHADOWS.md, \"Kept while the view moves "
+               "within them\"): the median frame after the first, and how many of those frames kept the maps. Texels "
+               "drawn: the part of the maps' texels "
                "the casters were drawn into, within the reach of the visible samples' lookups (docs/SHADOWS.md, "
                f"\"Casters drawn only where the samples read\"). The shadow pass's parts, timed apart in the same "
                "frames (a wait between them, so they add up to a little more): the fit (the sample pass, whose depth "
@@ -1063,10 +1067,11 @@ def still_section(still):
                f"{still['timingMethod']}, both programs on {still['renderer']}. Edges: p95 true→rendered / "
                "rendered→true, px, as in \"Defaults\".\n")
     lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving): fit + maps | texels drawn "
-             "| moving frame ms | still frame ms | osg-vdsm frame ms | moving / VDSM | still / VDSM | memory | edges p95: ours / VDSM |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "pass": 0, "maps": 0, "unshadowed": 0,
-             "unshadowedPeers": 0}
+             "| moving frame ms | still frame ms | walking frame ms (kept) | osg-vdsm frame ms | moving / VDSM | still / VDSM "
+             "| walking / VDSM | memory | edges p95: ours / VDSM |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "walking": 0, "walkingPeers": 0, "pass": 0, "maps": 0,
+             "unshadowed": 0, "unshadowedPeers": 0}
     peer_allocators = set()
     for r in ours:
         scene = r["scene"]
@@ -1079,6 +1084,8 @@ def still_section(still):
             tally["unshadowed"] += cost["unshadowedFrameMs"]["median"] <= peer_unshadowed
             peer_allocators.add(cost.get("peerAllocatorTuned"))
         moving, kept = frame_ms(r), r["stillFrameMs"]["median"]
+        walking = r["walkFrameMs"]["median"] if r.get("walkFrameMs") else None
+        walking_cell = f"{walking:.1f} ({r['walkKeptFrames']} of {still['walkFrames']})" if walking else "–"
         if not r["stillFrameKeptMaps"]:
             raise SystemExit(f"results.py: {scene}'s still frames drew their maps (stillFrameKeptMaps false)")
         if peer:
@@ -1086,6 +1093,9 @@ def still_section(still):
             tally["moving"] += moving <= frame_ms(peer)
             tally["still"] += kept <= frame_ms(peer)
             tally["still06"] += kept <= 0.6 * frame_ms(peer)
+            if walking:
+                tally["walkingPeers"] += 1
+                tally["walking"] += walking <= frame_ms(peer)
             peer_overhead = frame_ms(peer) - cost["unshadowedFrameMs"]["median"]
             tally["pass"] += r["shadowPassMs"]["median"] > peer_overhead
             tally["maps"] += r["shadowMapsMs"]["median"] > peer_overhead
@@ -1094,16 +1104,18 @@ def still_section(still):
             f"| {scene} | {cost['triangles']} | {cost['unshadowedFrameMs']['median']:.1f} / "
             + (f"{peer_unshadowed:.1f}" if peer_unshadowed else "–")
             + f" | {r['shadowPassMs']['median']:.1f}: {r['shadowFitMs']['median']:.1f} + "
-            f"{r['shadowMapsMs']['median']:.1f} | {drawn_texels(r)} | {moving:.1f} | {kept:.1f} | "
-            + (f"{frame_ms(peer):.1f} | {moving / frame_ms(peer):.2f}× | {kept / frame_ms(peer):.2f}×" if peer
-               else "– | – | –")
+            f"{r['shadowMapsMs']['median']:.1f} | {drawn_texels(r)} | {moving:.1f} | {kept:.1f} | {walking_cell} | "
+            + (f"{frame_ms(peer):.1f} | {moving / frame_ms(peer):.2f}× | {kept / frame_ms(peer):.2f}× | "
+               + (f"{walking / frame_ms(peer):.2f}×" if walking else "–") if peer
+               else "– | – | – | –")
             + f" | {r['shadowBytes'] / 2**20:.0f} MiB | {mine['trueToRendered']['p95']:.1f} / "
             f"{mine['renderedToTrue']['p95']:.1f}; "
             + (f"{theirs['trueToRendered']['p95']:.1f} / {theirs['renderedToTrue']['p95']:.1f} |" if theirs else "– |"))
     out.append("\n".join(lines) + "\n")
     out.append(f"Against the goal (the default's frame ≤ 1.0× VDSM's), scenes with a peer run meeting it: moving "
                f"{tally['moving']} of {tally['peers']}, still {tally['still']} of {tally['peers']} "
-               f"({tally['still06']} at ≤ 0.6×, the goal with virtual maps). Why moving frames miss: on "
+               f"({tally['still06']} at ≤ 0.6×, the goal with virtual maps), walking {tally['walking']} of "
+               f"{tally['walkingPeers']}. Why moving frames miss: on "
                f"{tally['pass']} of {tally['peers']} our shadow pass alone (the sample pass, then the casters "
                "into a map fitted to the visible samples, which the model then fills) costs more than VDSM's frame over "
                f"our unshadowed one, and on {tally['maps']} the maps alone do. VDSM fits its map to the view frustum "
