@@ -213,13 +213,41 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
     }
 }
 
+namespace {
+
+bool regionWithin(const glm::vec4& region, const glm::vec4& outer) {
+    return glm::all(glm::greaterThanEqual(glm::vec2(region), glm::vec2(outer))) &&
+           glm::all(glm::lessThanEqual(glm::vec2(region.z, region.w), glm::vec2(outer.z, outer.w)));
+}
+
+/// Of a map side, the margin drawn beyond the region a moving view reads (FittedShadowMaps::render).
+constexpr float kMovingViewMargin = 1.0f / 16.0f;
+
+} // namespace
+
 engine::DrawnMeshes FittedShadowMaps::render(const engine::Scene& scene, const engine::gl::Program& program,
                                              std::span<const MapSlot> slots,
                                              const CasterOmissions& omissions) {
     engine::DrawnMeshes drawnMeshes;
+    std::vector<MapSlot> drawing(slots.begin(), slots.end());
     for (std::size_t layer = 0; maps_ && layer < slots.size(); ++layer) {
         const engine::gl::Framebuffer& framebuffer = maps_->framebuffers[layer];
-        const LightProjection& projection = slots[layer].projection;
+        LightProjection& projection = drawing[layer].projection;
+        // A map drawn again where it lay, because the region the view reads grew past what was drawn: the
+        // view moves across it, so a margin beyond that region is drawn too, which the next frames' regions
+        // then fall within (holds).
+        if (layer < drawn_.size() && projection.square.z > 0.0f &&
+            drawn_[layer].projection.square == projection.square &&
+            !regionWithin(projection.drawnRegion, drawn_[layer].projection.drawnRegion)) {
+            const glm::vec4 grown(
+                glm::min(glm::vec2(projection.drawnRegion), glm::vec2(drawn_[layer].projection.drawnRegion)) -
+                    kMovingViewMargin,
+                glm::max(glm::vec2(projection.drawnRegion.z, projection.drawnRegion.w),
+                         glm::vec2(drawn_[layer].projection.drawnRegion.z,
+                                   drawn_[layer].projection.drawnRegion.w)) +
+                    kMovingViewMargin);
+            projection.drawnRegion = glm::clamp(grown, 0.0f, 1.0f);
+        }
         framebuffer.bind();
         const glm::ivec2 size = maps_->depth.size();
         glViewport(0, 0, size.x, size.y);
@@ -235,7 +263,7 @@ engine::DrawnMeshes FittedShadowMaps::render(const engine::Scene& scene, const e
             glDisable(GL_SCISSOR_TEST);
         }
     }
-    drawn_.assign(slots.begin(), slots.end());
+    drawn_ = std::move(drawing);
     return drawnMeshes;
 }
 
@@ -246,12 +274,9 @@ bool FittedShadowMaps::holds(std::span<const MapSlot> slots) const {
     for (std::size_t i = 0; i < slots.size(); ++i) {
         const LightProjection& now = slots[i].projection;
         const LightProjection& drawn = drawn_[i].projection;
-        const bool within =
-            glm::all(glm::greaterThanEqual(glm::vec2(now.drawnRegion), glm::vec2(drawn.drawnRegion))) &&
-            glm::all(glm::lessThanEqual(glm::vec2(now.drawnRegion.z, now.drawnRegion.w),
-                                        glm::vec2(drawn.drawnRegion.z, drawn.drawnRegion.w)));
         if (slots[i].lightIndex != drawn_[i].lightIndex || slots[i].resolution != drawn_[i].resolution ||
-            now.worldToShadow != drawn.worldToShadow || now.depthRange != drawn.depthRange || !within) {
+            now.worldToShadow != drawn.worldToShadow || now.depthRange != drawn.depthRange ||
+            !regionWithin(now.drawnRegion, drawn.drawnRegion)) {
             return false;
         }
     }

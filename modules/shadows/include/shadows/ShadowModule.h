@@ -43,7 +43,8 @@ struct ShadowStats {
     int mapResolution = 0;
     /// Texels of the whole maps drawn in the last frame that casters were drawn into, summed over the maps:
     /// each map's LightProjection::drawnRegion, the fill the shadow pass spent (0 with virtual maps, whose
-    /// `pages` count what was drawn).
+    /// `pages` count what was drawn). A map a moving view draws again where it lay also fills a margin beyond
+    /// its region, which this leaves out.
     std::size_t casterTexels = 0;
     /// Whether the last frame kept the maps of the frame before, nothing they are drawn from having changed
     /// (ShadowSettings::reuseUnchangedMaps): it drew no map and ran no sample pass.
