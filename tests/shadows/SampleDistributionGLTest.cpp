@@ -4,6 +4,7 @@
 #include "VisibleSamples.h"
 
 #include "../engine/GLTestContext.h"
+#include "../support/ComparisonSamplerLeftOnUnit.h"
 
 #include <engine/EmbeddedShaderFile.h>
 #include <engine/Engine.h>
@@ -173,25 +174,20 @@ TEST(GpuReductionSampler, IgnoresASamplerLeftOnItsUnit) {
     glTestContext();
     engine::EntityId camera = engine::kNoEntity;
     const engine::Scene scene = mergedApron(camera);
-    const auto reduced = [&](GLuint sampler) {
+    const auto reduced = [&] {
         engine::Engine engine;
         engine.renderer().shareViewDepth = false;
         auto& probe = static_cast<SampleProbe&>(engine.addModule(std::make_unique<SampleProbe>()));
         engine::RenderTarget target({131, 67});
-        glBindSampler(0, sampler);
         engine.renderFrame(scene, camera, target);
-        glBindSampler(0, 0);
         return probe.bounds;
     };
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LESS);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    const auto left = reduced(sampler);
-    glDeleteSamplers(1, &sampler);
-    const auto clean = reduced(0);
+    const auto clean = reduced();
+    std::optional<VisibleSamples::Bounds> left;
+    {
+        const testsupport::ComparisonSamplerLeftOnUnit sampler(0);
+        left = reduced();
+    }
     ASSERT_TRUE(clean && left);
     EXPECT_EQ(left->viewDepth, clean->viewDepth);
     EXPECT_EQ(left->slices[0].samples, clean->slices[0].samples);

@@ -257,6 +257,14 @@ std::vector<float> visibilityImage(engine::Engine& engine, const engine::Scene& 
     return target.readPixelsFloat();
 }
 
+/// What a module with `settings` that redraws its maps every frame renders of `scene` at `size`.
+std::vector<float> redrawnImage(const engine::Scene& scene, glm::ivec2 size, ShadowSettings settings) {
+    settings.reuseUnchangedMaps = false;
+    engine::Engine reference;
+    reference.addModule(std::make_unique<ShadowModule>(settings));
+    return visibilityImage(reference, scene, size);
+}
+
 TEST_P(KeptMapsGLTest, AStillViewKeepsItsMapsUntilWhatTheyAreDrawnFromChanges) {
     glTestContext();
     engine::Scene scene = boxOnPlaneUnderASun();
@@ -266,13 +274,7 @@ TEST_P(KeptMapsGLTest, AStillViewKeepsItsMapsUntilWhatTheyAreDrawnFromChanges) {
     engine::Engine engine;
     auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
     // Every frame drawing its maps: what each frame must look like.
-    ShadowSettings redrawing = settings;
-    redrawing.reuseUnchangedMaps = false;
-    const auto redrawn = [&] {
-        engine::Engine reference;
-        reference.addModule(std::make_unique<ShadowModule>(redrawing));
-        return visibilityImage(reference, scene, size);
-    };
+    const auto redrawn = [&] { return redrawnImage(scene, size, settings); };
 
     visibilityImage(engine, scene, size);
     EXPECT_FALSE(module.stats().reusedMaps) << "the first frame draws its maps";
@@ -336,13 +338,7 @@ Walk walkComparedWithRedrawing(engine::Scene& scene, glm::ivec2 size, glm::vec3 
     settings.debugView = ShadowDebugView::Visibility;
     engine::Engine engine;
     auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
-    ShadowSettings redrawing = settings;
-    redrawing.reuseUnchangedMaps = false;
-    const auto redrawn = [&] {
-        engine::Engine reference;
-        reference.addModule(std::make_unique<ShadowModule>(redrawing));
-        return visibilityImage(reference, scene, size);
-    };
+    const auto redrawn = [&] { return redrawnImage(scene, size, settings); };
     const auto differing = [](const std::vector<float>& a, const std::vector<float>& b) {
         std::size_t count = 0;
         for (std::size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4) {

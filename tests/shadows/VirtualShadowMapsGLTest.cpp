@@ -2,6 +2,7 @@
 // frame, redraw only a moved caster's pages (and its old shadow goes), fall back to coarser levels over
 // budget; the same for spot lights' maps and point lights' faces, and the room in the default budget.
 #include "../engine/GLTestContext.h"
+#include "../support/ComparisonSamplerLeftOnUnit.h"
 
 #include <content/GltfLoader.h>
 #include <engine/Engine.h>
@@ -244,17 +245,9 @@ TEST(VirtualShadowMaps, MarkingIgnoresASamplerLeftOnItsUnit) {
     VirtualRig clean(loaded, virtualSettings(), {157, 113});
     const engine::Image reference = clean.frame();
     const ShadowStats cleanStats = clean.module->stats();
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LESS);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glBindSampler(0, sampler);
+    const testsupport::ComparisonSamplerLeftOnUnit sampler(0);
     VirtualRig left(loaded, virtualSettings(), {157, 113});
     const engine::Image image = left.frame();
-    glBindSampler(0, 0);
-    glDeleteSamplers(1, &sampler);
     EXPECT_EQ(left.module->stats().pages.requested, cleanStats.pages.requested);
     EXPECT_EQ(differing(image, reference), 0u);
 }
