@@ -404,6 +404,28 @@ TEST(ShadowModuleGLTest, AMovingViewKeepsItsMapsWhileTheirPlacementsHoldItsSampl
     EXPECT_FALSE(module.stats().keptMaps) << "reuseUnchangedMaps off";
 }
 
+class MovingViewGLTest : public ::testing::TestWithParam<const char*> {};
+
+// Every kind of map a moving view may keep: a sun's cascades (outdoor), a spot light's map (spheres), point
+// lights' cube faces (room). Each frame of a walk matches a module that redraws every frame.
+TEST_P(MovingViewGLTest, KeptMapsMatchRedrawnOnes) {
+    glTestContext();
+    content::SceneLoadOptions options;
+    options.subdivisionLevel = 1;
+    content::LoadedScene loaded = content::GltfLoader::load(
+        std::filesystem::path(CONTENT_DIR) / "scenes" / (std::string(GetParam()) + ".gltf"), options);
+    const engine::EntityId camera = *loaded.scene.firstCamera();
+    const glm::vec3 forward = -glm::vec3(loaded.scene.worldMatrix(camera)[2]);
+    const Walk walk = walkComparedWithRedrawing(loaded.scene, {96, 72}, 0.02f * glm::normalize(forward), 12);
+    std::cout << "[ measured ] " << GetParam() << ": 12 steps of 2 cm, " << walk.kept << " kept the maps\n";
+    EXPECT_GE(walk.kept, 1) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryMapKind, MovingViewGLTest, ::testing::Values("outdoor", "spheres", "room"),
+                         [](const ::testing::TestParamInfo<const char*>& scene) {
+                             return std::string(scene.param);
+                         });
+
 // Walking along a row of casters, the view reads more of the map each step: a map drawn again where it lay is
 // drawn a margin beyond what the view reads, so the next steps keep it (none does without the margin). The
 // samples span the map's width, so every few steps they leave the placement.
