@@ -239,13 +239,11 @@ engine::DrawnMeshes FittedShadowMaps::render(const engine::Scene& scene, const e
         if (layer < drawn_.size() && projection.square.z > 0.0f &&
             drawn_[layer].projection.square == projection.square &&
             !regionWithin(projection.drawnRegion, drawn_[layer].projection.drawnRegion)) {
-            const glm::vec4 grown(
-                glm::min(glm::vec2(projection.drawnRegion), glm::vec2(drawn_[layer].projection.drawnRegion)) -
-                    kMovingViewMargin,
-                glm::max(glm::vec2(projection.drawnRegion.z, projection.drawnRegion.w),
-                         glm::vec2(drawn_[layer].projection.drawnRegion.z,
-                                   drawn_[layer].projection.drawnRegion.w)) +
-                    kMovingViewMargin);
+            const glm::vec4& now = projection.drawnRegion;
+            const glm::vec4& before = drawn_[layer].projection.drawnRegion;
+            const glm::vec4 grown(glm::min(glm::vec2(now), glm::vec2(before)) - kMovingViewMargin,
+                                  glm::max(glm::vec2(now.z, now.w), glm::vec2(before.z, before.w)) +
+                                      kMovingViewMargin);
             projection.drawnRegion = glm::clamp(grown, 0.0f, 1.0f);
         }
         framebuffer.bind();
