@@ -316,9 +316,24 @@ content::LoadedScene sunAndSpotKnob() {
     return loaded;
 }
 
+// The room's two point lights and a sun: 12 faces and 16 clipmap levels, page-table layers and map slots
+// beyond the 24 there were, so the sun cast no shadow.
+content::LoadedScene roomAndSun() {
+    content::LoadedScene loaded = loadVirtualScene("room");
+    const engine::EntityId sun = loaded.scene.create("sun");
+    engine::LightComponent light;
+    light.intensity = 2.0f;
+    loaded.scene.entity(sun).light = light;
+    loaded.scene.entity(sun).transform = engine::Transform::lookAt({2.0f, 6.0f, 3.0f}, {0.0f, 0.0f, 0.0f});
+    return loaded;
+}
+
 content::LoadedScene loadFaceScene(const std::string& name) {
     if (name == "spot-knob") {
         return spotKnob();
+    }
+    if (name == "room-and-sun") {
+        return roomAndSun();
     }
     return name == "sun-and-spot-knob" ? sunAndSpotKnob() : loadVirtualScene(name);
 }
@@ -363,7 +378,9 @@ INSTANTIATE_TEST_SUITE_P(
                       FaceAgreementCase{"spheres_receiver_plane", "spheres",
                                         ShadowTechnique::ReceiverPlaneBias},
                       FaceAgreementCase{"sun_and_spot_slope_scaled", "sun-and-spot-knob",
-                                        ShadowTechnique::SlopeScaledBias, 1, ShadowDebugView::None}),
+                                        ShadowTechnique::SlopeScaledBias, 1, ShadowDebugView::None},
+                      FaceAgreementCase{"room_and_sun_slope_scaled", "room-and-sun",
+                                        ShadowTechnique::SlopeScaledBias, 10, ShadowDebugView::None}),
     [](const ::testing::TestParamInfo<FaceAgreementCase>& value) { return value.param.name; });
 
 struct CacheCase {
@@ -473,8 +490,8 @@ TEST(VirtualShadowMaps, RoomFitsTheDefaultBudget) {
     }
 }
 
-// Two suns' clipmaps need 32 page-table layers of the 24: the second casts no shadow (and is warned), the
-// first still does.
+// Four suns' clipmaps need 64 page-table layers of the 48: the fourth casts no shadow (and is warned), the
+// others still do.
 TEST(VirtualShadowMaps, LightsBeyondThePageTableLayersAreLeftOut) {
     glTestContext();
     content::LoadedScene loaded = loadVirtualScene("knob");
@@ -484,12 +501,15 @@ TEST(VirtualShadowMaps, LightsBeyondThePageTableLayersAreLeftOut) {
             sun = id;
         }
     });
-    const engine::EntityId second = loaded.scene.create("second sun", loaded.scene.entity(sun).parent);
-    loaded.scene.entity(second).transform = loaded.scene.entity(sun).transform;
-    loaded.scene.entity(second).light = loaded.scene.entity(sun).light;
+    for (const char* name : {"second sun", "third sun", "fourth sun"}) {
+        const engine::EntityId another = loaded.scene.create(name, loaded.scene.entity(sun).parent);
+        loaded.scene.entity(another).transform = loaded.scene.entity(sun).transform;
+        loaded.scene.entity(another).light = loaded.scene.entity(sun).light;
+    }
+    static_assert(3 * kClipmapLevels == kPageTableLayers);
     VirtualRig rig(loaded, virtualSettings());
     const engine::Image image = rig.frame();
-    EXPECT_EQ(rig.module->stats().shadowMaps, kClipmapLevels);
+    EXPECT_EQ(rig.module->stats().shadowMaps, 3 * kClipmapLevels);
     EXPECT_GT(shadowed(image), image.pixels.size() / 4 / 20);
 }
 

@@ -10,8 +10,10 @@
 namespace shadows {
 
 /// Shadow maps the lighting pass can read at once: lights' maps, cascades and cube faces together
-/// (GS_SHADOW_MAX_MAPS in shaders/shadows/block.glsl); each is a layer of the module's map arrays.
-inline constexpr int kMaxMaps = 24;
+/// (GS_SHADOW_MAX_MAPS in shaders/shadows/block.glsl); each is a layer of the module's map arrays. Enough
+/// for every light the renderer takes to be a point light (six faces), or for a virtual sun's 16 clipmap
+/// levels beside five point lights.
+inline constexpr int kMaxMaps = engine::ForwardRenderer::kMaxLights * 6;
 /// Uniform buffer binding of the block; 0 is the engine's FrameBlock.
 inline constexpr GLuint kShadowBlockBinding = 1;
 

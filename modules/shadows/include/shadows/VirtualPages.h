@@ -26,7 +26,7 @@ inline constexpr int kClipmapLevels = 16;
 
 /// @brief Page-table layers all lights together may use: one per map slot of the lighting pass (a clipmap
 /// level, a spot map, a cube face), kMaxMaps of ShadowBlock.h.
-inline constexpr int kPageTableLayers = 24;
+inline constexpr int kPageTableLayers = 48;
 
 /// @brief Page counters of the virtual maps in the last frame.
 struct VirtualPageStats {

@@ -1,7 +1,7 @@
 // The shadow module's per-frame scalars, read by the lighting pass and by the shadow pass (the technique's
 // parameters). Mirrors ShadowBlock (modules/shadows/src/ShadowBlock.h); binding 0 is the engine's FrameBlock,
 // whose GS_MAX_LIGHTS (frame.glsl) sizes the light slots.
-const int GS_SHADOW_MAX_MAPS = 24;
+const int GS_SHADOW_MAX_MAPS = 48;
 
 // How a light's maps are laid out (LightMapsKind).
 const int GS_SHADOW_LIGHT_NONE = 0;
