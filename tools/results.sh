@@ -24,12 +24,16 @@ bench=./build/bin/gs-shadowbench
 rm -rf "$work"
 
 corpus=(suzanne human-subdivided fzk-haus at-at jeep duck wuson epileptic dwarf cylinder-engine terrain)
-peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<scene stem>/NAME
-    local scene=$1 name=$2 stem
-    stem=$(basename "${scene%.*}")
+peer_run() { # peer_run SCENE_FILE PREFIX OPTION...: one peer run, into PREFIX.json, .png and .visibility.pfm
+    local scene=$1 prefix=$2
     shift 2
     xvfb-run -a -s "-screen 0 1280x1024x24" ./build/bin/gs-osgshadow --scene "$scene" "$@" \
-        --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$work/osg/$stem/$name"
+        --size 640x480 --map-size 2048 --frames 9 --warmup 3 --out "$prefix"
+}
+peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<scene stem>/NAME
+    local scene=$1 name=$2
+    shift 2
+    peer_run "$scene" "$work/osg/$(basename "${scene%.*}")/$name" "$@"
 }
 peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults, named after it
     local scene=$1 technique
@@ -246,7 +250,9 @@ fi
 if [ "${only[1]:-still}" = still ]; then
 # 14. A still view keeps its maps: the default technique on every real model and the generated apron (one mesh),
 #     timed with every frame drawing its maps, as a moving view's do, and on the still view, which keeps them;
-#     osgShadow's ViewDependentShadowMap beside it (step 4 ran the peer on the models; the apron's run is here).
+#     osgShadow's ViewDependentShadowMap beside it (step 4 ran the peer on the models for its edges; the apron's run
+#     is here). Its frames are timed again just before and just after ours on each scene (into $work/osg-still), so
+#     the ratios compare runs minutes apart at most, bracketing the machine's drift.
 if [ ${#only[@]} -gt 0 ]; then
     bash tools/corpus.sh
     for model in "${corpus[@]}"; do
@@ -254,8 +260,12 @@ if [ ${#only[@]} -gt 0 ]; then
     done
 fi
 peer corpus/apron-merged.glb vdsm
-"$bench" $(printf -- '--scene %s ' "${corpus[@]}") --scene apron-merged --techniques default --resolutions 2048 \
-    --size 640x480 --frames 7 --walk 30 --peer "$work/osg" --out "$work/still"
+for scene in "${corpus[@]}" apron-merged; do
+    peer_run "corpus/$scene.glb" "$work/osg-still/$scene/before" --technique vdsm
+    "$bench" --scene "$scene" --techniques default --resolutions 2048 --size 640x480 --frames 7 --walk 30 \
+        --peer "$work/osg" --out "$work/still/$scene"
+    peer_run "corpus/$scene.glb" "$work/osg-still/$scene/after" --technique vdsm
+done
 fi
 
 # Debian's interpreter: python3-matplotlib installs there (a python3 earlier on PATH may lack it).

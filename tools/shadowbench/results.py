@@ -12,6 +12,7 @@ models", "Defaults" and "PCF over GSM against single-tap GSM".
 import itertools
 import json
 import pathlib
+import statistics
 import sys
 
 import matplotlib
@@ -1040,17 +1041,38 @@ def drawn_texels(r):
     return f"{100.0 * r['casterTexels'] / texels:.0f} %" if texels and "casterTexels" in r else "–"
 
 
+def load_still():
+    """Step 14's runs of tools/results.sh, one per scene, as one, in the order they ran; "bracket" holds per scene the
+    peer's VDSM runs timed just before and just after ours (osg-still/<scene>/before.json and after.json)."""
+    runs = sorted((work / "still").glob("*/results.json"), key=lambda path: path.stat().st_mtime)
+    if not runs:
+        sys.exit(f"results.py: {work / 'still'} holds no scene's results.json (run tools/results.sh)")
+    parts = [json.loads(path.read_text()) for path in runs]
+    still = {**parts[0], "results": [r for part in parts for r in part["results"]],
+             "scenes": [c for part in parts for c in part["scenes"]], "bracket": {}}
+    for path in runs:
+        scene = path.parent.name
+        sides = [work / "osg-still" / scene / f"{side}.json" for side in ("before", "after")]
+        missing = [str(side) for side in sides if not side.exists()]
+        if missing:
+            sys.exit(f"results.py: {', '.join(missing)} missing (run tools/results.sh)")
+        still["bracket"][scene] = [json.loads(side.read_text()) for side in sides]
+    return still
+
+
 def still_section(still):
     """The default technique's frame with every frame drawing its maps and on a still view that keeps them, beside
-    osgShadow's ViewDependentShadowMap, per scene, and the frame goal's tally."""
+    osgShadow's ViewDependentShadowMap timed just before and after it, per scene, and the frame goal's tally."""
     costs = {c["scene"]: c for c in still["scenes"]}
     ours = [r for r in still["results"] if not r["peer"]]
     technique = ours[0]["settings"]["technique"]
     out.append("## A still view keeps its maps\n")
     out.append(f"The default `{technique}` on every real model and the generated apron (one mesh), "
                f"{still['width']}x{still['height']}, {ours[0]['settings']['resolution']}² maps, each scene under its "
-               "own light, against osgShadow's ViewDependentShadowMap (`osg-vdsm`, its own run of the same scene, "
-               "camera and light). *Moving*: every frame draws its maps (`reuseUnchangedMaps` off), as each frame of a "
+               "own light, against osgShadow's ViewDependentShadowMap (`osg-vdsm`, the same scene, camera and light, "
+               "timed just before and just after ours on each scene: the ratios take the mean of the two runs, whose "
+               "difference shows how far the machine's speed drifted meanwhile; its edges are from its run in \"Real "
+               "models\"). *Moving*: every frame draws its maps (`reuseUnchangedMaps` off), as each frame of a "
                "moving view does: the sample pass, the casters and the lighting pass. *Still*: the same view's "
                "frames after one that drew them, which keep them (`reuseUnchangedMaps`, the default; docs/SHADOWS.md, "
                "\"Kept while nothing changes\"); VDSM draws its map every frame either way, so *moving* is the like-for-"
@@ -1067,7 +1089,8 @@ def still_section(still):
                f"{still['timingMethod']}, both programs on {still['renderer']}. Edges: p95 true→rendered / "
                "rendered→true, px, as in \"Defaults\".\n")
     lines = ["| scene | triangles | unshadowed: ours / osg ms | shadow pass ms (moving): fit + maps | texels drawn "
-             "| moving frame ms | still frame ms | walking frame ms (kept) | osg-vdsm frame ms | moving / VDSM | still / VDSM "
+             "| moving frame ms | still frame ms | walking frame ms (kept) | osg-vdsm frame ms: mean (before / after) "
+             "| moving / VDSM | still / VDSM "
              "| walking / VDSM | memory | edges p95: ours / VDSM |",
              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     tally = {"peers": 0, "moving": 0, "still": 0, "still06": 0, "walking": 0, "walkingPeers": 0, "pass": 0, "maps": 0,
@@ -1078,11 +1101,16 @@ def still_section(still):
         cost = costs[scene]
         peer = next((p for p in still["results"] if p["scene"] == scene and p["label"] == "osg-vdsm"), None)
         mine = r["edges"]
-        peer_unshadowed = cost["peerUnshadowedFrameMs"]["median"] if cost["peerUnshadowedFrameMs"] else None
+        bracket = still["bracket"].get(scene)
+        if peer and not bracket:
+            raise SystemExit(f"results.py: {scene} has a peer row but no VDSM runs timed beside ours (osg-still)")
+        peer_frames = [run["shadowedMs"]["median"] for run in bracket] if bracket else None
+        peer_frame = statistics.mean(peer_frames) if bracket else None
+        peer_unshadowed = statistics.mean(run["unshadowedMs"]["median"] for run in bracket) if bracket else None
         if peer_unshadowed:
             tally["unshadowedPeers"] += 1
             tally["unshadowed"] += cost["unshadowedFrameMs"]["median"] <= peer_unshadowed
-            peer_allocators.add(cost.get("peerAllocatorTuned"))
+            peer_allocators.update(run.get("allocatorTuned") for run in bracket)
         moving, kept = frame_ms(r), r["stillFrameMs"]["median"]
         walking = r["walkFrameMs"]["median"] if r.get("walkFrameMs") else None
         walking_cell = f"{walking:.1f} ({r['walkKeptFrames']} of {still['walkFrames']})" if walking else "–"
@@ -1090,13 +1118,13 @@ def still_section(still):
             raise SystemExit(f"results.py: {scene}'s still frames drew their maps (stillFrameKeptMaps false)")
         if peer:
             tally["peers"] += 1
-            tally["moving"] += moving <= frame_ms(peer)
-            tally["still"] += kept <= frame_ms(peer)
-            tally["still06"] += kept <= 0.6 * frame_ms(peer)
+            tally["moving"] += moving <= peer_frame
+            tally["still"] += kept <= peer_frame
+            tally["still06"] += kept <= 0.6 * peer_frame
             if walking:
                 tally["walkingPeers"] += 1
-                tally["walking"] += walking <= frame_ms(peer)
-            peer_overhead = frame_ms(peer) - cost["unshadowedFrameMs"]["median"]
+                tally["walking"] += walking <= peer_frame
+            peer_overhead = peer_frame - cost["unshadowedFrameMs"]["median"]
             tally["pass"] += r["shadowPassMs"]["median"] > peer_overhead
             tally["maps"] += r["shadowMapsMs"]["median"] > peer_overhead
         theirs = peer["edges"] if peer else None
@@ -1105,8 +1133,8 @@ def still_section(still):
             + (f"{peer_unshadowed:.1f}" if peer_unshadowed else "–")
             + f" | {r['shadowPassMs']['median']:.1f}: {r['shadowFitMs']['median']:.1f} + "
             f"{r['shadowMapsMs']['median']:.1f} | {drawn_texels(r)} | {moving:.1f} | {kept:.1f} | {walking_cell} | "
-            + (f"{frame_ms(peer):.1f} | {moving / frame_ms(peer):.2f}× | {kept / frame_ms(peer):.2f}× | "
-               + (f"{walking / frame_ms(peer):.2f}×" if walking else "–") if peer
+            + (f"{peer_frame:.1f} ({peer_frames[0]:.1f} / {peer_frames[1]:.1f}) | {moving / peer_frame:.2f}× | "
+               f"{kept / peer_frame:.2f}× | " + (f"{walking / peer_frame:.2f}×" if walking else "–") if peer
                else "– | – | – | –")
             + f" | {r['shadowBytes'] / 2**20:.0f} MiB | {mine['trueToRendered']['p95']:.1f} / "
             f"{mine['renderedToTrue']['p95']:.1f}; "
@@ -1123,7 +1151,7 @@ def still_section(still):
                "the last column.\n")
     allocator = ("its glibc thresholds raised as ours are (gs-osgshadow --allocator tuned; tools/osgpeer/README.md)"
                  if peer_allocators == {True} else "not every run of it on the glibc thresholds ours run on")
-    out.append(f"Unshadowed, against the peer's own unshadowed pass, {allocator}: ours ≤ 1.0× on "
+    out.append(f"Unshadowed, against the peer's own unshadowed pass (the mean of the same two runs), {allocator}: ours ≤ 1.0× on "
                f"{tally['unshadowed']} of {tally['unshadowedPeers']} scenes.\n")
 
 
@@ -1177,7 +1205,7 @@ if partial == "sizing":
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, sizing["renderer"], partial))
     sys.exit(0)
 if partial == "still":
-    still = load("still")
+    still = load_still()
     still_section(still)
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, still["renderer"], partial))
     sys.exit(0)
@@ -1206,8 +1234,8 @@ if (work / "soft" / "results.json").exists():
     soft_section(load("soft"), load("soft-coarse"), load("soft-seams"))
 if (work / "sizing" / "results.json").exists():
     sizing_section(load("sizing"), load_views("sizing-floor"))
-if (work / "still" / "results.json").exists():
-    still_section(load("still"))
+if any((work / "still").glob("*/results.json")):
+    still_section(load_still())
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))
