@@ -251,8 +251,8 @@ if [ "${only[1]:-still}" = still ]; then
 # 14. A still view keeps its maps: the default technique on every real model and the generated apron (one mesh),
 #     timed with every frame drawing its maps, as a moving view's do, and on the still view, which keeps them;
 #     osgShadow's ViewDependentShadowMap beside it (step 4 ran the peer on the models for its edges; the apron's run
-#     is here). Its frames are timed again just before and just after ours on each scene (into $work/osg-still), so
-#     the ratios compare runs minutes apart at most, bracketing the machine's drift.
+#     is here). The machine's speed drifts by up to 2x within a minute: each scene runs 3 rounds of ours, the peer's
+#     frames timed before the first and after each (into $work/osg-still), each round compared with its neighbours.
 if [ ${#only[@]} -gt 0 ]; then
     bash tools/corpus.sh
     for model in "${corpus[@]}"; do
@@ -261,10 +261,12 @@ if [ ${#only[@]} -gt 0 ]; then
 fi
 peer corpus/apron-merged.glb vdsm
 for scene in "${corpus[@]}" apron-merged; do
-    peer_run "corpus/$scene.glb" "$work/osg-still/$scene/before" --technique vdsm
-    "$bench" --scene "$scene" --techniques default --resolutions 2048 --size 640x480 --frames 7 --walk 30 \
-        --peer "$work/osg" --out "$work/still/$scene"
-    peer_run "corpus/$scene.glb" "$work/osg-still/$scene/after" --technique vdsm
+    peer_run "corpus/$scene.glb" "$work/osg-still/$scene/0" --technique vdsm
+    for round in 1 2 3; do
+        "$bench" --scene "$scene" --techniques default --resolutions 2048 --size 640x480 --frames 7 --walk 30 \
+            --peer "$work/osg" --out "$work/still/$scene/$round"
+        peer_run "corpus/$scene.glb" "$work/osg-still/$scene/$round" --technique vdsm
+    done
 done
 fi
 
