@@ -199,10 +199,22 @@ fi
 if [ "${only[1]:-virtual}" = virtual ]; then
 # 11. Virtual maps: the default technique with whole fitted maps and with virtual maps, timed, with its pages cold
 #     and while the camera walks, on the large views, the knob and real models, osgShadow's VDSM beside it where
-#     the peer has the scene; then the apron under suns down to 3°, accuracy only.
-"$bench" --scene apron-merged --scene apron --scene terrain-low --scene terrain --scene knob --scene cylinder-engine \
-    --scene fzk-haus --scene suzanne --techniques default --resolutions 2048 --config "virtual:mapAllocation=virtual" \
-    --frames 5 --walk 30 --peer "$work/osg" --out "$work/virtual"
+#     the peer has the scene (3 rounds there, the peer's frames timed before the first and after each, into
+#     $work/osg-virtual, as in step 14); then the apron under suns down to 3°, accuracy only.
+virtual_timed() { # virtual_timed SCENE ROUND
+    "$bench" --scene "$1" --techniques default --resolutions 2048 --config "virtual:mapAllocation=virtual" \
+        --frames 5 --walk 30 --peer "$work/osg" --out "$work/virtual/$1/$2"
+}
+for scene in apron-merged apron terrain-low knob; do
+    virtual_timed "$scene" 1
+done
+for scene in terrain cylinder-engine fzk-haus suzanne; do
+    peer_run "corpus/$scene.glb" "$work/osg-virtual/$scene/0" --technique vdsm
+    for round in 1 2 3; do
+        virtual_timed "$scene" "$round"
+        peer_run "corpus/$scene.glb" "$work/osg-virtual/$scene/$round" --technique vdsm
+    done
+done
 "$bench" --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 --techniques default --resolutions 2048 \
     --config "virtual:mapAllocation=virtual" --accuracy-only --out "$work/virtual-suns"
 #     The texel size the pages are drawn for (virtualTexelPixels) against the texels they take, accuracy only.

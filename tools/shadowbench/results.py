@@ -729,16 +729,19 @@ def virtual_table(timed):
             lit = max(d["pixels"], 1) if d else 1
             cold = f"{pages['coldRendered']} ({pages['coldTexels'] / lit:.1f}×)" if pages else "–"
             walk = f"{pages['walkTexelsPerFrame'] / lit:.2f}×" if pages and pages["walkTexelsPerFrame"] >= 0 else "–"
-            ratio = f"{frame_ms(r) / frame_ms(peer):.2f}×" if peer and r is not peer else "–"
+            # Rounds alternated with the peer's runs give the median of their ratios (load_virtual).
+            frame_ratio = (r.get("vdsmRatio", frame_ms(r) / frame_ms(peer)) if peer and r is not peer else None)
+            ratio = f"{frame_ratio:.2f}×" if frame_ratio is not None else "–"
             walking = r.get("walkFrameMs")
             walking_cell = "–"
             if walking and r is not peer:
-                walking_cell = f"{walking['median']:.1f}" + (f" ({walking['median'] / frame_ms(peer):.2f}×)" if peer else "")
+                walking_ratio = r.get("walkingVdsmRatio", walking["median"] / frame_ms(peer)) if peer else None
+                walking_cell = f"{walking['median']:.1f}" + (f" ({walking_ratio:.2f}×)" if peer else "")
                 if not pages and r.get("walkKeptFrames") is not None:
                     walking_cell += f", {r['walkKeptFrames']} kept"
                 if peer:
                     tally = summary["walkingVirtual" if pages else "walkingFitted"]
-                    tally[0] += walking["median"] <= frame_ms(peer)
+                    tally[0] += walking_ratio <= 1.0
                     tally[1] += 1
             e = r["edges"]
             lines.append(f"| {scene} | {r['label']} | {density} | {e['trueToRendered']['p95']:.1f} / "
@@ -754,7 +757,7 @@ def virtual_table(timed):
                 summary["memory"] += r["shadowBytes"] <= 64 * 2**20 + 2**21
                 if peer:
                     summary["peers"] += 1
-                    summary["frame"] += frame_ms(r) <= 0.6 * frame_ms(peer)
+                    summary["frame"] += frame_ratio <= 0.6
     return lines, summary
 
 
@@ -771,7 +774,11 @@ def virtual_section(timed, suns):
                "pixels. Times are the static view's frames (no page drawn) and, walking, the median of the walk's frames "
                "after its first (fitted maps draw theirs whole where a step leaves their placements and keep them where "
                "it does not, the frames that kept them counted; virtual maps draw the pages each step newly asks "
-               f"for), {timed['timingMethod']}; the peer's are from its own run of the same scene, camera and light.\n")
+               f"for), {timed['timingMethod']}. Where the peer has the scene, our configurations run "
+               f"{timed['peerRounds']} rounds, the peer's VDSM timed before the first and after each "
+               "(the machine's speed drifts by up to 2× within a minute): times are the medians over the rounds, a ratio "
+               "the median of each round's over the mean of the peer's runs either side of it, and VDSM's frame the "
+               "median of those means.\n")
     lines, summary = virtual_table(timed)
     out.append("\n".join(lines) + "\n")
     out.append(f"Against the goals, of {summary['views']} views: {summary['density']} have ≥ 99 % of lit receivers at "
@@ -1041,24 +1048,65 @@ def drawn_texels(r):
     return f"{100.0 * r['casterTexels'] / texels:.0f} %" if texels and "casterTexels" in r else "–"
 
 
-def load_still():
-    """Step 14's runs of tools/results.sh as one: per scene, in the order they ran, its rounds (still/<scene>/<round>/
-    results.json) and the peer's VDSM runs timed before the first and after each (osg-still/<scene>/<n>.json)."""
-    folders = sorted((path.parent for path in (work / "still").glob("*/1/results.json")),
-                     key=lambda folder: (folder / "results.json").stat().st_mtime)
+def load_rounds(name):
+    """A step of tools/results.sh run scene by scene in rounds, in the order the scenes ran: per scene its rounds
+    (<name>/<scene>/<round>/results.json) and the peer's VDSM runs timed before the first round and after each
+    (osg-<name>/<scene>/<n>.json), none for a scene the peer lacks."""
+    folders = sorted((path.parent.parent for path in (work / name).glob("*/1/results.json")),
+                     key=lambda folder: (folder / "1" / "results.json").stat().st_mtime)
     if not folders:
-        sys.exit(f"results.py: {work / 'still'} holds no scene's rounds (run tools/results.sh)")
+        sys.exit(f"results.py: {work / name} holds no scene's rounds (run tools/results.sh)")
     scenes = []
-    for first in folders:
-        scene = first.parent.name
+    for folder in folders:
         rounds = []
-        while (first.parent / str(len(rounds) + 1) / "results.json").exists():
-            rounds.append(json.loads((first.parent / str(len(rounds) + 1) / "results.json").read_text()))
-        peers = [work / "osg-still" / scene / f"{n}.json" for n in range(len(rounds) + 1)]
+        while (folder / str(len(rounds) + 1) / "results.json").exists():
+            rounds.append(json.loads((folder / str(len(rounds) + 1) / "results.json").read_text()))
+        peers = [work / f"osg-{name}" / folder.name / f"{n}.json" for n in range(len(rounds) + 1)]
         missing = [str(path) for path in peers if not path.exists()]
-        if missing:
+        if 0 < len(missing) < len(peers):
             sys.exit(f"results.py: {', '.join(missing)} missing (run tools/results.sh)")
-        scenes.append({"scene": scene, "rounds": rounds, "peers": [json.loads(path.read_text()) for path in peers]})
+        scenes.append({"scene": folder.name, "rounds": rounds,
+                       "peers": [json.loads(path.read_text()) for path in peers if path.exists()]})
+    return scenes
+
+
+def bracketed(peers, key, rounds):
+    """Per round, the mean of the peer's `key` time (shadowedMs, unshadowedMs) in its runs either side of it."""
+    return [statistics.mean(run[key]["median"] for run in peers[n:n + 2]) for n in range(rounds)]
+
+
+def load_virtual():
+    """Step 11's timed rounds as one run (every scene's first round), where a scene has the peer's runs beside its
+    rounds: our rows' times the medians over the rounds, with the medians of their ratios to VDSM's frame
+    ("vdsmRatio", "walkingVdsmRatio"), and the peer row's frame the median of its runs either side of each round."""
+    scenes = load_rounds("virtual")
+    merged = {**scenes[0]["rounds"][0], "results": [], "scenes": [],
+              "peerRounds": max((len(entry["rounds"]) for entry in scenes if entry["peers"]), default=0)}
+    for entry in scenes:
+        first = entry["rounds"][0]
+        merged["scenes"] += first["scenes"]
+        rows = [dict(r) for r in first["results"]]
+        vdsm = bracketed(entry["peers"], "shadowedMs", len(entry["rounds"])) if entry["peers"] else None
+        for row in rows:
+            if not vdsm or (row["peer"] and row["label"] != "osg-vdsm"):
+                continue
+            if row["peer"]:
+                row["frameMs"] = {**row["frameMs"], "median": statistics.median(vdsm)}
+                continue
+            same = [next(r for r in run["results"] if r["label"] == row["label"]) for run in entry["rounds"]]
+            row["vdsmRatio"] = median_ratio([frame_ms(r) for r in same], vdsm)
+            if all(r.get("walkFrameMs") for r in same):
+                row["walkingVdsmRatio"] = median_ratio([r["walkFrameMs"]["median"] for r in same], vdsm)
+            for key in ("frameMs", "shadowPassMs", "lightingPassMs", "walkFrameMs"):
+                if row.get(key):
+                    row[key] = {**row[key], "median": statistics.median(r[key]["median"] for r in same)}
+        merged["results"] += rows
+    return merged
+
+
+def load_still():
+    """Step 14's rounds as one run (the first round's fields) with "stillScenes" (load_rounds)."""
+    scenes = load_rounds("still")
     return {**scenes[0]["rounds"][0], "stillScenes": scenes}
 
 
@@ -1105,16 +1153,16 @@ def still_section(still):
     median = statistics.median
     for entry in still["stillScenes"]:
         scene = entry["scene"]
+        if not entry["peers"]:
+            raise SystemExit(f"results.py: {scene} has no VDSM runs beside its rounds (osg-still)")
         runs = [ours_of(run) for run in entry["rounds"]]
         costs = [next(c for c in run["scenes"] if c["scene"] == scene) for run in entry["rounds"]]
         r, cost = runs[0], costs[0]
         if not all(run["stillFrameKeptMaps"] for run in runs):
             raise SystemExit(f"results.py: {scene}'s still frames drew their maps (stillFrameKeptMaps false)")
         # Each round against the mean of the peer's runs either side of it.
-        vdsm = [statistics.mean(run["shadowedMs"]["median"] for run in entry["peers"][n:n + 2])
-                for n in range(len(runs))]
-        vdsm_unshadowed = [statistics.mean(run["unshadowedMs"]["median"] for run in entry["peers"][n:n + 2])
-                           for n in range(len(runs))]
+        vdsm = bracketed(entry["peers"], "shadowedMs", len(runs))
+        vdsm_unshadowed = bracketed(entry["peers"], "unshadowedMs", len(runs))
         peer_allocators.update(run.get("allocatorTuned") for run in entry["peers"])
         peer_edges = next((p["edges"] for p in entry["rounds"][0]["results"] if p["label"] == "osg-vdsm"), None)
         moving = [frame_ms(run) for run in runs]
@@ -1204,7 +1252,7 @@ if partial == "defaults":
         results_md.write_text(splice(heading, out, real_meta["renderer"], partial))
     sys.exit(0)
 if partial == "virtual":
-    timed = load("virtual")
+    timed = load_virtual()
     virtual_section(timed, load("virtual-suns"))
     virtual_texels_section(load("virtual-texels"))
     virtual_lights_section(load("virtual-lights"))
@@ -1241,8 +1289,8 @@ real_models(real_meta, load("scaling"))
 every_light_section(load("outdoor-cascades"), load("every-light"))
 fit_section(load("fit"))
 path_shimmer_section(load("path-shimmer"))
-if (work / "virtual" / "results.json").exists():
-    virtual_section(load("virtual"), load("virtual-suns"))
+if any((work / "virtual").glob("*/1/results.json")):
+    virtual_section(load_virtual(), load("virtual-suns"))
     virtual_texels_section(load("virtual-texels"))
     if (work / "virtual-lights" / "results.json").exists():
         virtual_lights_section(load("virtual-lights"))
