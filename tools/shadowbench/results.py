@@ -23,6 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from default_rule import EDGE_FLOOR, FLOOR, MEMORY_BUDGET_MIB, MIN_EDGE_PIXELS, MIN_PIXELS  # noqa: E402
 from default_rule import edges_scored, map_mib, meets_floor, recommend, scored  # noqa: E402
 import cost_model  # noqa: E402
+from peer_rounds import bracketed, median_ratio  # noqa: E402
 
 # The sections --only regenerates alone, by its option.
 PARTIAL_SECTIONS = {"real": "## Real models", "defaults": "## Defaults", "virtual": "## Virtual maps",
@@ -1070,11 +1071,6 @@ def load_rounds(name):
     return scenes
 
 
-def bracketed(peers, key, rounds):
-    """Per round, the mean of the peer's `key` time (shadowedMs, unshadowedMs) in its runs either side of it."""
-    return [statistics.mean(run[key]["median"] for run in peers[n:n + 2]) for n in range(rounds)]
-
-
 def load_virtual():
     """Step 11's timed rounds as one run (every scene's first round), where a scene has the peer's runs beside its
     rounds: our rows' times the medians over the rounds, with the medians of their ratios to VDSM's frame
@@ -1212,11 +1208,6 @@ def still_section(still):
                  if peer_allocators == {True} else "not every run of it on the glibc thresholds ours run on")
     out.append(f"Unshadowed, against the peer's own unshadowed pass in the same runs, {allocator}: ours ≤ 1.0× on "
                f"{tally['unshadowed']} of {tally['peers']} scenes.\n")
-
-
-def median_ratio(ours, theirs):
-    """The median over rounds of our time over the peer's in the same round."""
-    return statistics.median(a / b for a, b in zip(ours, theirs))
 
 
 def splice(heading, sections, renderer, option):
