@@ -1289,7 +1289,7 @@ if (work / "soft" / "results.json").exists():
     soft_section(load("soft"), load("soft-coarse"), load("soft-seams"))
 if (work / "sizing" / "results.json").exists():
     sizing_section(load("sizing"), load_views("sizing-floor"))
-if any((work / "still").glob("*/results.json")):
+if any((work / "still").glob("*/1/results.json")):
     still_section(load_still())
 if (work / "cost-model" / "results.json").exists():
     nir_path = work / "cost-model" / "nir-counts.json"
