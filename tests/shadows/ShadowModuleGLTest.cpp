@@ -597,6 +597,35 @@ TEST(ShadowModuleGLTest, ResourcesOnlyForShadowCastingLights) {
     EXPECT_EQ(module.stats().bytes, 128u * 128u * 2u);
 }
 
+// Every light the renderer takes may be a point light casting from all its faces: 48 map slots. With 24, the
+// lights past the fourth cast no shadow.
+TEST(ShadowModuleGLTest, EveryLightMayBeAPointLight) {
+    glTestContext();
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
+    for (int light = 0; light < engine::ForwardRenderer::kMaxLights; ++light) {
+        const auto lamp = scene.create("lamp " + std::to_string(light));
+        engine::LightComponent point;
+        point.type = engine::LightType::Point;
+        point.intensity = 2.0f;
+        scene.entity(lamp).light = point;
+        const float angle = 0.785f * static_cast<float>(light);
+        scene.entity(lamp).transform.translation = {1.5f * std::cos(angle), 1.0f, 1.5f * std::sin(angle)};
+    }
+    engine::Engine engine;
+    ShadowSettings settings;
+    settings.resolution = 64;
+    settings.depthFormat = DepthFormat::D16;
+    auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+    engine::RenderTarget target({32, 32});
+    engine.renderFrame(scene, camera, target);
+    EXPECT_GT(module.stats().shadowMaps, 24);
+    EXPECT_EQ(module.stats().bytes, static_cast<std::size_t>(module.stats().shadowMaps) * 64u * 64u * 2u);
+    for (int light = 0; light < engine::ForwardRenderer::kMaxLights; ++light) {
+        EXPECT_TRUE(module.lightProjection(light).has_value()) << "light " << light;
+    }
+}
+
 TEST(ShadowModuleGLTest, LoadsAsAPluginAndCastsShadows) {
     glTestContext();
     const content::LoadedScene loaded = knob(engine::LightType::Directional);
