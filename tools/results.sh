@@ -35,6 +35,17 @@ peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<s
     shift 2
     peer_run "$scene" "$work/osg/$(basename "${scene%.*}")/$name" "$@"
 }
+peer_rounds() { # peer_rounds SCENE STEP COMMAND...: 3 rounds of COMMAND, each given its round as a last argument,
+    # the peer's VDSM timed before the first and after each, into $work/osg-STEP/SCENE/<n> (results.py load_rounds):
+    # the machine's speed drifts by up to 2x within a minute, so each round is compared with its neighbours.
+    local scene=$1 step=$2 round
+    shift 2
+    peer_run "corpus/$scene.glb" "$work/osg-$step/$scene/0" --technique vdsm
+    for round in 1 2 3; do
+        "$@" "$round"
+        peer_run "corpus/$scene.glb" "$work/osg-$step/$scene/$round" --technique vdsm
+    done
+}
 peer() { # peer SCENE_FILE TECHNIQUE...: each technique's run at OSG's defaults, named after it
     local scene=$1 technique
     shift
@@ -199,8 +210,8 @@ fi
 if [ "${only[1]:-virtual}" = virtual ]; then
 # 11. Virtual maps: the default technique with whole fitted maps and with virtual maps, timed, with its pages cold
 #     and while the camera walks, on the large views, the knob and real models, osgShadow's VDSM beside it where
-#     the peer has the scene (3 rounds there, the peer's frames timed before the first and after each, into
-#     $work/osg-virtual, as in step 14); then the apron under suns down to 3°, accuracy only.
+#     the peer has the scene (3 rounds there, alternated with the peer's, peer_rounds); then the apron under suns
+#     down to 3°, accuracy only.
 virtual_timed() { # virtual_timed SCENE ROUND
     "$bench" --scene "$1" --techniques default --resolutions 2048 --config "virtual:mapAllocation=virtual" \
         --frames 5 --walk 30 --peer "$work/osg" --out "$work/virtual/$1/$2"
@@ -209,11 +220,7 @@ for scene in apron-merged apron terrain-low knob; do
     virtual_timed "$scene" 1
 done
 for scene in terrain cylinder-engine fzk-haus suzanne; do
-    peer_run "corpus/$scene.glb" "$work/osg-virtual/$scene/0" --technique vdsm
-    for round in 1 2 3; do
-        virtual_timed "$scene" "$round"
-        peer_run "corpus/$scene.glb" "$work/osg-virtual/$scene/$round" --technique vdsm
-    done
+    peer_rounds "$scene" virtual virtual_timed "$scene"
 done
 "$bench" --scene apron --scene apron-merged --light-sweep 75:40,15,8,3 --techniques default --resolutions 2048 \
     --config "virtual:mapAllocation=virtual" --accuracy-only --out "$work/virtual-suns"
@@ -263,8 +270,7 @@ if [ "${only[1]:-still}" = still ]; then
 # 14. A still view keeps its maps: the default technique on every real model and the generated apron (one mesh),
 #     timed with every frame drawing its maps, as a moving view's do, and on the still view, which keeps them;
 #     osgShadow's ViewDependentShadowMap beside it (step 4 ran the peer on the models for its edges; the apron's run
-#     is here). The machine's speed drifts by up to 2x within a minute: each scene runs 3 rounds of ours, the peer's
-#     frames timed before the first and after each (into $work/osg-still), each round compared with its neighbours.
+#     is here). Each scene runs 3 rounds of ours alternated with the peer's (peer_rounds).
 if [ ${#only[@]} -gt 0 ]; then
     bash tools/corpus.sh
     for model in "${corpus[@]}"; do
@@ -272,13 +278,12 @@ if [ ${#only[@]} -gt 0 ]; then
     done
 fi
 peer corpus/apron-merged.glb vdsm
+still_timed() { # still_timed SCENE ROUND
+    "$bench" --scene "$1" --techniques default --resolutions 2048 --size 640x480 --frames 7 --walk 30 \
+        --peer "$work/osg" --out "$work/still/$1/$2"
+}
 for scene in "${corpus[@]}" apron-merged; do
-    peer_run "corpus/$scene.glb" "$work/osg-still/$scene/0" --technique vdsm
-    for round in 1 2 3; do
-        "$bench" --scene "$scene" --techniques default --resolutions 2048 --size 640x480 --frames 7 --walk 30 \
-            --peer "$work/osg" --out "$work/still/$scene/$round"
-        peer_run "corpus/$scene.glb" "$work/osg-still/$scene/$round" --technique vdsm
-    done
+    peer_rounds "$scene" still still_timed "$scene"
 done
 fi
 

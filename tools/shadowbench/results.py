@@ -1060,8 +1060,8 @@ def load_rounds(name):
     scenes = []
     for folder in folders:
         rounds = []
-        while (folder / str(len(rounds) + 1) / "results.json").exists():
-            rounds.append(json.loads((folder / str(len(rounds) + 1) / "results.json").read_text()))
+        while (path := folder / str(len(rounds) + 1) / "results.json").exists():
+            rounds.append(json.loads(path.read_text()))
         peers = [work / f"osg-{name}" / folder.name / f"{n}.json" for n in range(len(rounds) + 1)]
         missing = [str(path) for path in peers if not path.exists()]
         if 0 < len(missing) < len(peers):
