@@ -91,5 +91,5 @@ TEST(ShadowMapArrayGLTest, SoftMomentsHaveTheirMipChainCountedInTheirBytes) {
     }
     EXPECT_EQ(target.bytes(plan), 256u * 256u * 4u + momentTexels * 8u); // D24, RGBA16 moments
     // A map smaller than the chain ends at one texel.
-    EXPECT_EQ(ShadowMapArray::momentLevels(16, plan), 5);
+    EXPECT_EQ(plan.momentLevelsAt(16), 5);
 }

@@ -626,6 +626,56 @@ TEST(ShadowModuleGLTest, EveryLightMayBeAPointLight) {
     }
 }
 
+// Whole maps over fittedBudgetMiB take the largest side that fits, as if asked for: two point lights' 12 EVSM
+// faces at 512² would take 60 MiB; in 16 MiB they are drawn at 256², the image that resolution 256 gives.
+TEST(ShadowModuleGLTest, MapsOverTheFittedBudgetTakeTheSideThatFitsAndSaySo) {
+    glTestContext();
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = boxOnPlaneSeenFromAbove(camera);
+    for (int light = 0; light < 2; ++light) {
+        const auto lamp = scene.create("lamp " + std::to_string(light));
+        engine::LightComponent point;
+        point.type = engine::LightType::Point;
+        scene.entity(lamp).light = point;
+        scene.entity(lamp).transform.translation = {light == 0 ? 1.5f : -1.0f, 1.2f,
+                                                    light == 0 ? 0.5f : -1.0f};
+    }
+    const auto render = [&](int resolution, int budgetMiB, ShadowStats& stats) {
+        engine::Engine engine;
+        ShadowSettings settings;
+        settings.technique = ShadowTechnique::Evsm;
+        settings.resolution = resolution;
+        settings.fittedBudgetMiB = budgetMiB;
+        auto& module = static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settings)));
+        engine::RenderTarget target({64, 64});
+        engine.renderFrame(scene, camera, target);
+        stats = module.stats();
+        return target.readPixels();
+    };
+    ShadowStats budgeted;
+    testing::internal::CaptureStderr();
+    const engine::Image within = render(512, 16, budgeted);
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_NE(said.find("fittedBudgetMiB 16"), std::string::npos) << said;
+    EXPECT_NE(said.find("drawn at 256²"), std::string::npos) << said;
+    EXPECT_EQ(budgeted.mapResolution, 256);
+    EXPECT_LE(budgeted.bytes, std::size_t(16) << 20);
+    EXPECT_GT(budgeted.shadowMaps, 2);
+
+    ShadowStats asked;
+    testing::internal::CaptureStderr();
+    const engine::Image at256 = render(256, 1024, asked);
+    EXPECT_EQ(testing::internal::GetCapturedStderr().find("fittedBudgetMiB"), std::string::npos);
+    EXPECT_EQ(asked.mapResolution, 256);
+    EXPECT_EQ(asked.shadowMaps, budgeted.shadowMaps);
+    EXPECT_EQ(within.pixels, at256.pixels);
+
+    // The budget that holds the twelve faces at 512² leaves them there.
+    ShadowStats roomy;
+    render(512, 64, roomy);
+    EXPECT_EQ(roomy.mapResolution, 512);
+}
+
 TEST(ShadowModuleGLTest, LoadsAsAPluginAndCastsShadows) {
     glTestContext();
     const content::LoadedScene loaded = knob(engine::LightType::Directional);

@@ -202,3 +202,69 @@ TEST(ShadowPlanTest, OnlyTechniquesThatCompareLeaveOutPlanesThatShadowNothing) {
     perTap.receiverPlaneKernel = ReceiverPlaneKernel::PerTap;
     EXPECT_TRUE(ShadowPlan::resolve(perTap).leavesOutShadowlessPlanes);
 }
+
+TEST(ShadowPlanTest, MapBytesCountEveryTargetTheTechniqueStores) {
+    constexpr std::size_t kSide = 2048u * 2048u;
+    EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{}).mapBytes(2048, 3), 3u * kSide * 4u); // D24
+    // GSM reading stored derivatives: their RG32F target beside the depth.
+    ShadowSettings stored{.technique = ShadowTechnique::Gsm};
+    stored.gradientSource = GradientSource::StoredDerivatives;
+    ASSERT_TRUE(ShadowPlan::resolve(stored).storesGradient);
+    EXPECT_EQ(ShadowPlan::resolve(stored).mapBytes(2048, 2), 2u * kSide * (4u + 8u));
+    // EVSM's RGBA32F moments: the 80 MiB a 2048² map holds.
+    EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{.technique = ShadowTechnique::Evsm}).mapBytes(2048, 1),
+              80u << 20);
+    // A blur adds its one temporary layer of moments, however many maps there are.
+    ShadowSettings blurred{.technique = ShadowTechnique::Evsm};
+    blurred.momentBlurRadius = 2;
+    EXPECT_EQ(ShadowPlan::resolve(blurred).mapBytes(2048, 2), 2u * (80u << 20) + (64u << 20));
+    // msm-soft's mip chain: 7 levels of RGBA16 moments.
+    std::size_t mipTexels = 0;
+    for (std::size_t side = 2048; side >= 32; side /= 2) {
+        mipTexels += side * side;
+    }
+    EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{.technique = ShadowTechnique::MsmSoft}).mapBytes(2048, 1),
+              kSide * 4u + mipTexels * 8u);
+    EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{}).mapBytes(2048, 0), 0u);
+}
+
+struct BudgetCase {
+    const char* name;
+    ShadowTechnique technique;
+    int layers;
+    std::size_t budgetMiB;
+    int side;
+};
+
+class BudgetedResolutionTest : public testing::TestWithParam<BudgetCase> {};
+
+TEST_P(BudgetedResolutionTest, HalvesTheSideUntilTheMapsFit) {
+    const BudgetCase& c = GetParam();
+    const ShadowPlan plan = ShadowPlan::resolve(ShadowSettings{.technique = c.technique});
+    const int side = budgetedResolution(plan, 2048, c.layers, c.budgetMiB << 20);
+    EXPECT_EQ(side, c.side);
+    // The largest that fits: twice the side would not (unless it is the resolution asked for).
+    if (side > 64) {
+        EXPECT_LE(plan.mapBytes(side, c.layers), c.budgetMiB << 20);
+    }
+    if (side < 2048) {
+        EXPECT_GT(plan.mapBytes(2 * side, c.layers), c.budgetMiB << 20);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BudgetedResolutionTest,
+    testing::Values(
+        // Eight point lights' 48 faces in 16 MiB each: 768 MiB, within the default budget.
+        BudgetCase{"depth_48_faces_fit", ShadowTechnique::SlopeScaledBias, 48, 1024, 2048},
+        // The same under EVSM, 80 MiB each (3.75 GiB): 1024² (960 MiB).
+        BudgetCase{"evsm_48_faces_halved", ShadowTechnique::Evsm, 48, 1024, 1024},
+        // The room's two point lights under EVSM: 960 MiB, which fits.
+        BudgetCase{"evsm_12_faces_fit", ShadowTechnique::Evsm, 12, 1024, 2048},
+        BudgetCase{"evsm_12_faces_in_100_MiB", ShadowTechnique::Evsm, 12, 100, 512},
+        // The smallest budget holds 48 EVSM maps of 64².
+        BudgetCase{"evsm_48_faces_in_4_MiB", ShadowTechnique::Evsm, 48, 4, 64},
+        // Below that the side stops at 64, over the budget.
+        BudgetCase{"stops_at_64", ShadowTechnique::Evsm, 48, 1, 64},
+        BudgetCase{"no_maps", ShadowTechnique::Evsm, 0, 4, 2048}),
+    [](const testing::TestParamInfo<BudgetCase>& budget) { return std::string(budget.param.name); });

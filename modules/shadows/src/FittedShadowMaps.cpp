@@ -36,8 +36,32 @@ SoftMargin FittedShadowMaps::softMargin(const engine::FrameLight& light) const {
     return {plan_.softReachTexels, follows ? size : 0.0f};
 }
 
+int FittedShadowMaps::budgetedSide(const engine::FrameContext& frame) {
+    // The most maps, not this frame's: a face or cascade coming into view then leaves the side as it is.
+    int layers = 0;
+    for (const engine::FrameLight& light : frame.lights) {
+        if (light.light.castsShadows) {
+            layers += light.light.type == engine::LightType::Point ? kCubeFaces
+                      : light.light.type == engine::LightType::Spot
+                          ? 1
+                          : (settings_.cascadeCount > 0 ? settings_.cascadeCount : kMaxCascades);
+        }
+    }
+    layers = std::min(layers, kMaxMaps);
+    const std::size_t budget = static_cast<std::size_t>(settings_.fittedBudgetMiB) << 20;
+    const int side = budgetedResolution(plan_, settings_.resolution, layers, budget);
+    if (side < settings_.resolution && !warnings_.mapBudget) {
+        std::cerr << "shadows: fittedBudgetMiB " << settings_.fittedBudgetMiB << " is less than the "
+                  << (plan_.mapBytes(settings_.resolution, layers) >> 20) << " MiB of " << layers
+                  << " maps of " << settings_.resolution << "², the most these lights may take: drawn at "
+                  << side << "² (" << (plan_.mapBytes(side, layers) >> 20) << " MiB)\n";
+        warnings_.mapBudget = true;
+    }
+    return side;
+}
+
 bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light,
-                                           bool sizeToView, std::vector<MapSlot>& slots,
+                                           int resolution, bool sizeToView, std::vector<MapSlot>& slots,
                                            LightMapsBlock& maps) {
     auto bounds = samples_.measure(host_, frame.frame, frame.fit, lightView(light.direction),
                                    settings_.cascadeSplitWeight, settings_.cascadeBlend);
@@ -59,8 +83,8 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     const int imageHeight = frame.frame.target.size.y;
     const bool oneMap =
         settings_.cascadeCount == 1 ||
-        (settings_.cascadeCount == 0 && oneMapResolvesView(slices, bounds->sliceDepths, settings_.resolution,
-                                                           frame.fit.projection, imageHeight));
+        (settings_.cascadeCount == 0 &&
+         oneMapResolvesView(slices, bounds->sliceDepths, resolution, frame.fit.projection, imageHeight));
     if (!oneMap) {
         samples_.measureCascadeSlices(host_, *bounds);
         for (std::size_t s = 1; s < slices.size(); ++s) {
@@ -69,20 +93,20 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     }
     const int count = settings_.cascadeCount > 0 ? settings_.cascadeCount
                       : oneMap                   ? 1
-                               : densityCascadeCount(slices, bounds->sliceDepths, settings_.resolution,
+                               : densityCascadeCount(slices, bounds->sliceDepths, resolution,
                                                      frame.fit.projection, imageHeight);
     const float hardMargin = plan_.kernelReachTexels - plan_.softReachTexels;
-    const int resolution =
-        sizeToView ? viewResolution(slices, bounds->sliceDepths, count, settings_.resolution, hardMargin,
+    const int side =
+        sizeToView ? viewResolution(slices, bounds->sliceDepths, count, resolution, hardMargin,
                                     settings_.fittedTexelPixels / (1.0f + 2.0f * plan_.filterRadiusTexels),
                                     frame.fit.projection, imageHeight)
-                   : settings_.resolution;
+                   : resolution;
     // Where the maps may stay as a camera moves, the placements drawn last are kept while they hold its
     // samples.
     std::vector<LightProjection> kept;
     if (settings_.reuseUnchangedMaps && frame.fitIsCamera) {
         for (const MapSlot& slot : drawn_) {
-            if (slot.lightIndex == light.index && slot.resolution == resolution) {
+            if (slot.lightIndex == light.index && slot.resolution == side) {
                 kept.push_back(slot.projection);
             }
         }
@@ -90,7 +114,7 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
     const auto fitted = [&](int cascade) {
         const auto slice = static_cast<std::size_t>(sampleSliceIndex(count, cascade));
         LightProjection projection =
-            fitToSamples(light.direction, slices[slice], frame.boxes, resolution, hardMargin,
+            fitToSamples(light.direction, slices[slice], frame.boxes, side, hardMargin,
                          settings_.texelSnapping, softMargin(light), &bounds->slices[slice], kept);
         if (!frame.fitIsCamera) { // the pixels shaded are not the fit's samples
             projection.drawnRegion = LightProjection{}.drawnRegion;
@@ -98,7 +122,7 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
         return projection;
     };
     if (count == 1) {
-        maps.slots.x = addSlot(slots, light.index, fitted(0), resolution);
+        maps.slots.x = addSlot(slots, light.index, fitted(0), side);
         maps.kind.x = drawnKind(maps, LightMapsKind::Single);
         return true;
     }
@@ -108,7 +132,7 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
         maps.splitNear[cascade] = cascade == 0 ? bounds->viewDepth.x : bounds->sliceDepths[slice - 1].y;
         maps.splitFar[cascade] = bounds->sliceDepths[slice].y;
         if (!slices[slice].empty()) {
-            maps.slots[cascade] = addSlot(slots, light.index, fitted(cascade), resolution);
+            maps.slots[cascade] = addSlot(slots, light.index, fitted(cascade), side);
         }
     }
     maps.kind = glm::ivec4(drawnKind(maps, LightMapsKind::Cascades), count, 0, 0);
@@ -116,9 +140,8 @@ bool FittedShadowMaps::fitToVisibleSamples(const AllocationFrame& frame, const e
 }
 
 void FittedShadowMaps::fitToBounds(const AllocationFrame& frame, const engine::FrameLight& light,
-                                   std::optional<glm::vec2> visibleRange, std::vector<MapSlot>& slots,
-                                   LightMapsBlock& maps) const {
-    const int resolution = settings_.resolution;
+                                   int resolution, std::optional<glm::vec2> visibleRange,
+                                   std::vector<MapSlot>& slots, LightMapsBlock& maps) const {
     const int count = settings_.cascadeCount > 0
                           ? settings_.cascadeCount
                           : automaticCascadeCount(visibleRange.value_or(glm::vec2(1.0f)));
@@ -162,7 +185,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
         std::any_of(frame.frame.lights.begin(), frame.frame.lights.end(), [](const auto& light) {
             return light.light.castsShadows && light.light.type == engine::LightType::Directional;
         });
-    const int resolution = settings_.resolution;
+    const int resolution = budgetedSide(frame.frame);
     // Where the receivers in view lie in depth: the cascades' range, and their automatic count.
     const std::optional<glm::vec2> visibleRange = visibleDepthRange(frame.fit, frame.boxes);
     for (const engine::FrameLight& light : frame.frame.lights) {
@@ -173,8 +196,8 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
         switch (light.light.type) {
         case engine::LightType::Directional:
             if (settings_.directionalFit != DirectionalFit::Samples ||
-                !fitToVisibleSamples(frame, light, sizeToView, slots, maps)) {
-                fitToBounds(frame, light, visibleRange, slots, maps);
+                !fitToVisibleSamples(frame, light, resolution, sizeToView, slots, maps)) {
+                fitToBounds(frame, light, resolution, visibleRange, slots, maps);
             }
             break;
         case engine::LightType::Spot:

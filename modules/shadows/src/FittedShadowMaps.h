@@ -39,13 +39,16 @@ private:
     /// @brief The soft part of that reach: none for a light of no size; for a directional light of a
     /// technique that follows it (softReachFollowsLight), as wide as its penumbrae over the map's depth.
     [[nodiscard]] SoftMargin softMargin(const engine::FrameLight& light) const;
+    /// @brief The side of the frame's maps: ShadowSettings::resolution, or less where the most maps its
+    /// shadow-casting lights may take would not fit in ShadowSettings::fittedBudgetMiB at it (said once).
+    [[nodiscard]] int budgetedSide(const engine::FrameContext& frame);
     /// Fits directional light `light`'s maps to the visible samples into `maps` and `slots`, at the side
-    /// the view needs with `sizeToView` (ShadowSettings::fittedTexelPixels), else at `resolution`; false,
-    /// having added nothing, when the view has no sample.
-    bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light, bool sizeToView,
-                             std::vector<MapSlot>& slots, LightMapsBlock& maps);
-    /// Fits directional light `light`'s maps to the mesh bounds in view.
-    void fitToBounds(const AllocationFrame& frame, const engine::FrameLight& light,
+    /// the view needs with `sizeToView` (ShadowSettings::fittedTexelPixels) up to `resolution`, else at
+    /// `resolution`; false, having added nothing, when the view has no sample.
+    bool fitToVisibleSamples(const AllocationFrame& frame, const engine::FrameLight& light, int resolution,
+                             bool sizeToView, std::vector<MapSlot>& slots, LightMapsBlock& maps);
+    /// Fits directional light `light`'s maps of `resolution`² to the mesh bounds in view.
+    void fitToBounds(const AllocationFrame& frame, const engine::FrameLight& light, int resolution,
                      std::optional<glm::vec2> visibleRange, std::vector<MapSlot>& slots,
                      LightMapsBlock& maps) const;
 

@@ -42,6 +42,7 @@ struct AllocationFrame {
 struct OnceWarnings {
     bool noSamples = false;
     bool pageBudget = false;
+    bool mapBudget = false;
 };
 
 /// @brief Where a frame's shadow texels live: which maps each shadow-casting light gets, drawing them, and

@@ -15,7 +15,7 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
         // Moments are filtered: blurred when the settings ask for it, then read bilinearly at their one level
         // (no mip chain: receiver.glsl, gsShadowMoments), or over the chain a soft technique reads at its
         // width.
-        moments.emplace(plan.momentsFormat, size, layers, momentLevels(resolution, plan));
+        moments.emplace(plan.momentsFormat, size, layers, plan.momentLevelsAt(resolution));
         if (plan.blursMoments) {
             blurTemporary.emplace(plan.momentsFormat, size, 1);
             blurFramebuffer.emplace("shadow moments blur");
@@ -48,36 +48,8 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
     }
 }
 
-int ShadowMapArray::momentLevels(int resolution, const ShadowPlan& plan) {
-    int levels = 1;
-    while (levels < plan.momentLevels && (resolution >> levels) > 0) {
-        ++levels;
-    }
-    return levels;
-}
-
-std::size_t ShadowMapArray::momentTexels(int resolution, const ShadowPlan& plan) {
-    std::size_t texels = 0;
-    for (int level = 0; level < momentLevels(resolution, plan); ++level) {
-        const auto side = static_cast<std::size_t>(resolution >> level);
-        texels += side * side;
-    }
-    return texels;
-}
-
 std::size_t ShadowMapArray::bytes(const ShadowPlan& plan) const {
-    const auto side = static_cast<std::size_t>(depth.size().x);
-    const std::size_t texels = side * side;
-    const auto count = static_cast<std::size_t>(layers());
-    std::size_t layer = texels * (plan.depthBytesPerTexel + (gradient ? 8 : 0));
-    if (moments) {
-        layer += momentTexels(depth.size().x, plan) * plan.momentBytesPerTexel;
-    }
-    std::size_t total = count * layer;
-    if (blurTemporary) {
-        total += texels * plan.momentBytesPerTexel; // the blur's one temporary layer
-    }
-    return total;
+    return plan.mapBytes(depth.size().x, layers());
 }
 
 GLuint ShadowMapArray::sampledTexture() const {

@@ -17,11 +17,7 @@ namespace shadows {
 struct ShadowMapArray {
     ShadowMapArray(int resolution, int layers, const ShadowPlan& plan);
 
-    /// @brief Mip levels of the moments at `resolution`: the plan's, no more than the size allows.
-    static int momentLevels(int resolution, const ShadowPlan& plan);
-    /// @brief Texels of one layer of moments at `resolution`, every mip level counted.
-    static std::size_t momentTexels(int resolution, const ShadowPlan& plan);
-    /// @brief GPU memory of these targets, bytes.
+    /// @brief GPU memory of these targets, bytes (ShadowPlan::mapBytes).
     [[nodiscard]] std::size_t bytes(const ShadowPlan& plan) const;
     /// @brief The texture the lighting pass samples: the moments where there are some, else the depth.
     [[nodiscard]] GLuint sampledTexture() const;

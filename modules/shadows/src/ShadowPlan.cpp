@@ -1,5 +1,6 @@
 #include <shadows/ShadowPlan.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadows {
@@ -149,6 +150,39 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
     // A bilinear lookup (a hardware 2x2 comparison, filtered depth or moments) blurs an edge over two texels.
     plan.filterRadiusTexels = taps + blur + (plan.sampler == MapSampler::CompareNearest ? 0.0f : 0.5f);
     return plan;
+}
+
+int ShadowPlan::momentLevelsAt(int resolution) const {
+    int levels = 1;
+    while (levels < momentLevels && (resolution >> levels) > 0) {
+        ++levels;
+    }
+    return levels;
+}
+
+std::size_t ShadowPlan::mapBytes(int resolution, int layers) const {
+    const auto side = static_cast<std::size_t>(std::max(resolution, 0));
+    const std::size_t texels = side * side;
+    std::size_t layer = texels * (depthBytesPerTexel + (storesGradient ? 8 : 0));
+    std::size_t total = 0;
+    if (!storesGradient && momentsFormat != 0) {
+        for (int level = 0; level < momentLevelsAt(resolution); ++level) {
+            const std::size_t levelSide = side >> level;
+            layer += levelSide * levelSide * momentBytesPerTexel;
+        }
+        if (blursMoments) {
+            total += texels * momentBytesPerTexel; // the blur's one temporary layer
+        }
+    }
+    return total + static_cast<std::size_t>(std::max(layers, 0)) * layer;
+}
+
+int budgetedResolution(const ShadowPlan& plan, int resolution, int layers, std::size_t budgetBytes) {
+    constexpr int kSmallestSide = 64;
+    while (resolution > kSmallestSide && plan.mapBytes(resolution, layers) > budgetBytes) {
+        resolution /= 2;
+    }
+    return resolution;
 }
 
 } // namespace shadows

@@ -77,6 +77,9 @@ bool jittered(const S& s) {
 bool virtualMaps(const S& s) {
     return s.mapAllocation == MapAllocation::Virtual;
 }
+bool fittedMaps(const S& s) {
+    return s.mapAllocation == MapAllocation::Fitted;
+}
 bool sizedToTheView(const S& s) {
     return s.mapAllocation == MapAllocation::Fitted && s.directionalFit == DirectionalFit::Samples &&
            !castsSoftShadows(s);
@@ -242,6 +245,16 @@ const std::vector<SettingRow>& rows() {
          "receiver's slope to the light included), in a pool of virtualBudgetMiB, cached while casters and "
          "light stay put. Over budget, pages fall back to coarser levels and the stats say so.",
          choice<MapAllocation, &S::mapAllocation>(), always, "--maps"},
+        {"fittedBudgetMiB", "MiB", "map budget",
+         "Memory of the whole maps, all lights together (depth, and the gradient or moments the technique "
+         "stores). Where the most maps the lights may take (six faces per point light, a sun's cascades: "
+         "four "
+         "when counted automatically) would need more at `resolution`, every map takes the largest side, "
+         "halved down to 64, that fits, and the module says so once: eight point lights under a moment "
+         "technique at 2048² would otherwise hold 3.8 GiB.",
+         IntSetting{&S::fittedBudgetMiB,
+                    [](const S&) { return fixed({.min = 4, .max = 65536, .powersOfTwo = true}); }},
+         fittedMaps, "--map-budget"},
         {"virtualBudgetMiB", "MiB", "page budget",
          "Memory of the virtual maps: the page pool (every light's pages, their borders and the technique's "
          "stored values), the lights' page tables and the page requests; it must hold at least one page "

@@ -20,6 +20,14 @@ struct ShadowPlan {
     /// @brief Resolves valid `settings` (ShadowSettings::validate is empty).
     static ShadowPlan resolve(const ShadowSettings& settings);
 
+    /// @brief Mip levels of the moments of a map of `resolution`²: momentLevels, no more than the size
+    /// allows.
+    [[nodiscard]] int momentLevelsAt(int resolution) const;
+    /// @brief GPU memory of `layers` whole maps of `resolution`² in these formats, bytes: the depth, the
+    /// gradient or the moments (every mip level), and the moments blur's one temporary layer
+    /// (ShadowStats::bytes).
+    [[nodiscard]] std::size_t mapBytes(int resolution, int layers) const;
+
     /// The technique's row of the technique table.
     const ShadowTechniqueTraits* traits = nullptr;
     /// How the lighting pass samples the map (the receiver-plane per-tap kernel compares in hardware).
@@ -91,5 +99,11 @@ struct ShadowPlan {
     /// The stratified jitter texture of jittered PCF is bound.
     bool needsJitterTexture = false;
 };
+
+/// @brief The side whole maps take within a memory budget: `resolution`, halved while `layers` maps of `plan`
+/// take more than `budgetBytes` (ShadowPlan::mapBytes), down to 64, where it stops however many bytes they
+/// take.
+[[nodiscard]] int budgetedResolution(const ShadowPlan& plan, int resolution, int layers,
+                                     std::size_t budgetBytes);
 
 } // namespace shadows

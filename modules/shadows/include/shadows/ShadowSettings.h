@@ -146,6 +146,9 @@ struct ShadowSettings {
     DirectionalFit directionalFit = DirectionalFit::Samples;
     /// How directional lights' texels are allocated: whole fitted maps, or virtual pages.
     MapAllocation mapAllocation = MapAllocation::Fitted;
+    /// Memory of the whole (fitted) maps, all lights together, MiB: the maps' side is halved until the most
+    /// maps the frame's lights may take fit in it (budgetedResolution).
+    int fittedBudgetMiB = 1024;
     /// Memory of the virtual maps' page pool, all lights together, MiB.
     int virtualBudgetMiB = 64;
     /// Side of a virtual page, texels.
