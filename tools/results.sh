@@ -70,13 +70,15 @@ defaults_views() { # defaults_views OUT OPTION...: the Defaults views, accuracy 
 real_models_steps() { # steps 4 to 6, the "Real models" section, which the full run and --only real run
     # 4. Real models (tools/corpus.sh) at 640x480 with 2048² maps: every technique, and every osgShadow technique of
     #    the OpenSceneGraph peer on the same scene, camera and light, measured against the same ray-traced truth; our
-    #    techniques timed in turn over 3 rounds.
+    #    techniques timed in turn in each of 3 rounds, alternated with the peer's VDSM (peer_rounds).
     bash tools/corpus.sh
+    real_timed() { # real_timed SCENE ROUND
+        "$bench" --scene "$1" --taps 4 --resolutions 2048 --frames 2 --peer "$work/osg" --out "$work/real/$1/$2"
+    }
     for model in "${corpus[@]}"; do
         peer "corpus/$model.glb" vdsm sm lispsm ssm
+        peer_rounds "$model" real real_timed "$model"
     done
-    "$bench" $(printf -- '--scene %s ' "${corpus[@]}") --taps 4 --resolutions 2048 --frames 2 --rounds 3 \
-        --peer "$work/osg" --out "$work/real"
 
     # 5. Frame-time scaling from 10k to 1M triangles (generated hills): ours without shadows and with gsm, the peer
     #    without shadows and with ViewDependentShadowMap.
