@@ -743,7 +743,7 @@ def virtual_table(timed):
             lit = max(d["pixels"], 1) if d else 1
             cold = f"{pages['coldRendered']} ({pages['coldTexels'] / lit:.1f}×)" if pages else "–"
             walk = f"{pages['walkTexelsPerFrame'] / lit:.2f}×" if pages and pages["walkTexelsPerFrame"] >= 0 else "–"
-            # Rounds alternated with the peer's runs give the median of their ratios (load_virtual).
+            # Rounds alternated with the peer's runs give the median of their ratios (merge_rounds).
             frame_ratio = (r.get("vdsmRatio", frame_ms(r) / frame_ms(peer)) if peer and r is not peer else None)
             ratio = f"{frame_ratio:.2f}×" if frame_ratio is not None else "–"
             walking = r.get("walkFrameMs")
