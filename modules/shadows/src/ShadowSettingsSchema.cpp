@@ -248,10 +248,9 @@ const std::vector<SettingRow>& rows() {
         {"fittedBudgetMiB", "MiB", "map budget",
          "Memory of the whole maps, all lights together (depth, and the gradient or moments the technique "
          "stores). Where the most maps the lights may take (six faces per point light, a sun's cascades: "
-         "four "
-         "when counted automatically) would need more at `resolution`, every map takes the largest side, "
-         "halved down to 64, that fits, and the module says so once: eight point lights under a moment "
-         "technique at 2048² would otherwise hold 3.8 GiB.",
+         "four when counted automatically) would need more at `resolution`, every map takes the largest "
+         "side, halved down to 64, that fits, and the module says so once: eight point lights under a "
+         "moment technique at 2048² would otherwise hold 3.8 GiB.",
          IntSetting{&S::fittedBudgetMiB,
                     [](const S&) { return fixed({.min = 4, .max = 65536, .powersOfTwo = true}); }},
          fittedMaps, "--map-budget"},
