@@ -4,6 +4,7 @@
 #include "../support/TestScenes.h"
 
 #include <content/GltfLoader.h>
+#include <engine/AddressSanitizer.h>
 #include <engine/Engine.h>
 #include <engine/Primitives.h>
 #include <engine/RenderTarget.h>
@@ -13,6 +14,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/resource.h>
 
 using namespace shadows;
 
@@ -674,6 +679,90 @@ TEST(ShadowModuleGLTest, MapsOverTheFittedBudgetTakeTheSideThatFitsAndSaySo) {
     ShadowStats roomy;
     render(512, 64, roomy);
     EXPECT_EQ(roomy.mapResolution, 512);
+}
+
+#if !defined(GS_ADDRESS_SANITIZER)
+/// The process's address space (/proc/self/status VmSize), bytes; 0 where it cannot be read.
+std::size_t addressSpaceBytes() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmSize:", 0) == 0) {
+            return std::stoull(line.substr(7)) << 10; // kB
+        }
+    }
+    return 0;
+}
+
+/// Holds the address space to `bytes` for its life, so that the driver's allocations beyond it fail.
+class AddressSpaceLimit {
+public:
+    explicit AddressSpaceLimit(std::size_t bytes) {
+        getrlimit(RLIMIT_AS, &before_);
+        rlimit limited = before_;
+        limited.rlim_cur = bytes;
+        setrlimit(RLIMIT_AS, &limited);
+    }
+    ~AddressSpaceLimit() { setrlimit(RLIMIT_AS, &before_); }
+    AddressSpaceLimit(const AddressSpaceLimit&) = delete;
+    AddressSpaceLimit& operator=(const AddressSpaceLimit&) = delete;
+
+private:
+    rlimit before_{};
+};
+#endif
+
+TEST(ShadowModuleGLTest, MapsTheDriverCannotAllocateTakeTheSideItCanAndSaySo) {
+#if defined(GS_ADDRESS_SANITIZER)
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no limit on it leaves it working";
+#else
+    glTestContext();
+    const engine::Scene scene = boxOnPlaneUnderASun();
+    const engine::EntityId camera = *scene.firstCamera();
+    const auto settingsAt = [](int resolution) {
+        ShadowSettings settings;
+        settings.technique = ShadowTechnique::HardCompare;
+        settings.resolution = resolution;
+        settings.fittedTexelPixels = 0.0f; // the map takes `resolution`, whatever the view needs
+        settings.fittedBudgetMiB = 65536;
+        return settings;
+    };
+    engine::Engine engine;
+    auto& module =
+        static_cast<ShadowModule&>(engine.addModule(std::make_unique<ShadowModule>(settingsAt(256))));
+    engine::RenderTarget target({64, 64});
+    engine.renderFrame(scene, camera, target); // the shaders compiled before the limit
+    ASSERT_GT(addressSpaceBytes(), 0u);
+
+    // 16384² D24 takes 1 GiB: with half of that left to the driver, it cannot have it, and 8192² (256 MiB)
+    // it can.
+    module.setSettings(settingsAt(16384));
+    testing::internal::CaptureStderr();
+    {
+        const AddressSpaceLimit limit(addressSpaceBytes() + (std::size_t(512) << 20));
+        engine.renderFrame(scene, camera, target);
+    }
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_NE(said.find("the shadow maps, 1 layer of 16384² (1024 MiB), could not be allocated"),
+              std::string::npos)
+        << said;
+    EXPECT_NE(said.find("drawn at 8192² while these settings hold"), std::string::npos) << said;
+    EXPECT_EQ(module.stats().mapResolution, 8192);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    const engine::Image fallen = target.readPixels();
+
+    // The next frame keeps the side that held, without asking again.
+    testing::internal::CaptureStderr();
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    EXPECT_EQ(module.stats().mapResolution, 8192);
+
+    // What the side that held draws is what asking for it draws.
+    module.setSettings(settingsAt(8192));
+    engine.renderFrame(scene, camera, target);
+    EXPECT_EQ(module.stats().mapResolution, 8192);
+    EXPECT_EQ(fallen.pixels, target.readPixels().pixels);
+#endif
 }
 
 TEST(ShadowModuleGLTest, LoadsAsAPluginAndCastsShadows) {

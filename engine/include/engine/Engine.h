@@ -1,6 +1,7 @@
 #pragma once
 
 #include <engine/ForwardRenderer.h>
+#include <engine/GlDebug.h>
 #include <engine/Module.h>
 #include <engine/ModuleLoader.h>
 #include <engine/PassTimer.h>
@@ -10,6 +11,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -62,6 +64,7 @@ private:
     void
     forEachMeshBounds(const Scene& scene,
                       const std::function<void(EntityId, const glm::mat4&, const Aabb&)>& visit) override;
+    std::vector<std::string> takeGlErrors() override { return GlDebug::takeErrors(); }
 
     Module& attach(std::unique_ptr<Attached> entry);
     void rebuildChunks();

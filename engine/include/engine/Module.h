@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -19,7 +20,7 @@ class Program;
 }
 
 /// @brief Bumped whenever Module, ModuleHost, FrameContext or DrawContext change layout or meaning.
-inline constexpr std::uint32_t kModuleAbiVersion = 5;
+inline constexpr std::uint32_t kModuleAbiVersion = 6;
 
 /// @brief Identifies the compiler and C++ library ABI; a module built with another one is refused,
 /// because C++ classes cross the module boundary.
@@ -84,6 +85,11 @@ public:
     virtual void forEachMeshBounds(
         const Scene& scene,
         const std::function<void(EntityId, const glm::mat4& model, const Aabb& localBounds)>& visit) = 0;
+    /// @brief Returns and forgets the GL errors recorded since the engine last checked (GlDebug::takeErrors),
+    /// for a module that answers one it caused: e.g. the GL_OUT_OF_MEMORY of an allocation the driver
+    /// refused, which it retries smaller. Through the host, as a module loaded from a library has its own
+    /// copy of the engine's statics.
+    virtual std::vector<std::string> takeGlErrors() = 0;
 };
 
 /// @brief A plugin that extends the renderer. The engine calls the hooks in this fixed order:

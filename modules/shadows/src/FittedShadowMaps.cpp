@@ -174,6 +174,45 @@ void FittedShadowMaps::fitToBounds(const AllocationFrame& frame, const engine::F
 
 void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlot>& slots,
                                 std::vector<LightMapsBlock>& lights) {
+    const std::vector<LightMapsBlock> unfitted = lights;
+    for (;;) {
+        fit(frame, slots, lights);
+        try {
+            allocateMaps(slots);
+            return;
+        } catch (const MapAllocationError& error) {
+            const int side = largestSide(slots);
+            if (side <= kSmallestMapSide) {
+                throw;
+            }
+            // Every side is tried once: the next fits are capped below the one the driver refused.
+            allocatableSide_ = side / 2;
+            std::cerr << "shadows: " << error.what() << ": drawn at " << allocatableSide_
+                      << "² while these settings hold; lower resolution or fittedBudgetMiB to what this "
+                         "driver holds\n";
+            // The refused allocation's GL_OUT_OF_MEMORY is answered here; where GL holds any other error
+            // flag (one per kind at most), the engine reports them all, this one among them.
+            bool outOfMemoryOnly = true;
+            for (int flags = 0; flags < 8; ++flags) {
+                const GLenum flag = glGetError();
+                if (flag == GL_NO_ERROR) {
+                    break;
+                }
+                outOfMemoryOnly = outOfMemoryOnly && flag == GL_OUT_OF_MEMORY;
+            }
+            if (outOfMemoryOnly) {
+                host_.takeGlErrors();
+            }
+            maps_.reset();
+            drawn_.clear();
+            slots.clear();
+            lights = unfitted;
+        }
+    }
+}
+
+void FittedShadowMaps::fit(const AllocationFrame& frame, std::vector<MapSlot>& slots,
+                           std::vector<LightMapsBlock>& lights) {
     // The maps share one array, so one light's view may size them: a frame whose only shadowed light is
     // directional. Spot and point maps, and a second sun's, keep `resolution`; so do the soft techniques,
     // whose margin of 64 texels and more would take a quarter of a 512² map.
@@ -185,7 +224,7 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
         std::any_of(frame.frame.lights.begin(), frame.frame.lights.end(), [](const auto& light) {
             return light.light.castsShadows && light.light.type == engine::LightType::Directional;
         });
-    const int resolution = budgetedSide(frame.frame);
+    const int resolution = std::min(budgetedSide(frame.frame), allocatableSide_);
     // Where the receivers in view lie in depth: the cascades' range, and their automatic count.
     const std::optional<glm::vec2> visibleRange = visibleDepthRange(frame.fit, frame.boxes);
     for (const engine::FrameLight& light : frame.frame.lights) {
@@ -220,19 +259,29 @@ void FittedShadowMaps::allocate(const AllocationFrame& frame, std::vector<MapSlo
             break;
         }
     }
+}
+
+int FittedShadowMaps::largestSide(std::span<const MapSlot> slots) {
+    int side = 0;
+    for (const MapSlot& slot : slots) {
+        side = std::max(side, slot.resolution);
+    }
+    return side;
+}
+
+void FittedShadowMaps::allocateMaps(std::span<const MapSlot> slots) {
     if (slots.empty()) {
         maps_.reset(); // nothing casts this frame: give the memory back
         drawn_.clear();
-    } else {
-        // The arrays hold exactly the maps in use, at the side the frame's fits took; a change in either
-        // reallocates them.
-        const int side = std::max_element(slots.begin(), slots.end(), [](const MapSlot& a, const MapSlot& b) {
-                             return a.resolution < b.resolution;
-                         })->resolution;
-        if (!maps_ || maps_->layers() != static_cast<int>(slots.size()) || maps_->depth.size().x != side) {
-            maps_ = std::make_unique<ShadowMapArray>(side, static_cast<int>(slots.size()), plan_);
-            drawn_.clear();
-        }
+        return;
+    }
+    // The arrays hold exactly the maps in use, at the side the frame's fits took; a change in either
+    // reallocates them.
+    const int side = largestSide(slots);
+    if (!maps_ || maps_->layers() != static_cast<int>(slots.size()) || maps_->depth.size().x != side) {
+        maps_.reset(); // the old maps' memory is free before the new ones ask for theirs
+        drawn_.clear();
+        maps_ = std::make_unique<ShadowMapArray>(side, static_cast<int>(slots.size()), plan_);
     }
 }
 

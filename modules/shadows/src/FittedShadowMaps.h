@@ -5,7 +5,9 @@
 #include <shadows/ShadowPlan.h>
 #include <shadows/ShadowSettings.h>
 
+#include <limits>
 #include <memory>
+#include <span>
 
 namespace shadows {
 
@@ -33,6 +35,12 @@ public:
     [[nodiscard]] std::size_t bytes() const override;
 
 private:
+    /// @brief Fits every shadow-casting light's maps (allocate) without allocating them.
+    void fit(const AllocationFrame& frame, std::vector<MapSlot>& slots, std::vector<LightMapsBlock>& lights);
+    /// @brief Holds maps_ at the side and layers `slots` ask for, reallocating where they differ.
+    /// @throws MapAllocationError where the driver cannot allocate them.
+    void allocateMaps(std::span<const MapSlot> slots);
+    [[nodiscard]] static int largestSide(std::span<const MapSlot> slots);
     /// @brief How far, texels, the kernels read beyond a map of `light`: the plan's, less the soft margin for
     /// a light of no size.
     [[nodiscard]] float kernelReach(const engine::FrameLight& light) const;
@@ -59,6 +67,8 @@ private:
     OnceWarnings& warnings_;
     std::unique_ptr<ShadowMapArray> maps_; // one layer per slot
     std::vector<MapSlot> drawn_;           // the slots maps_ was last drawn for; empty when it holds none
+    // Below the smallest side the driver could not allocate (allocate); every side until one fails.
+    int allocatableSide_ = std::numeric_limits<int>::max();
 };
 
 } // namespace shadows

@@ -129,7 +129,7 @@ int viewResolution(const std::array<LightRect, kSampleSlices>& rects,
         texelsAcross = std::max(texelsAcross, pixels / texelPixels);
     }
     const float needed = texelsAcross + 2.0f * (std::max(marginTexels, 0.0f) + 1.0f);
-    int side = std::min(64, resolution);
+    int side = std::min(kSmallestMapSide, resolution);
     while (side < resolution && static_cast<float>(side) < needed) {
         side *= 2;
     }

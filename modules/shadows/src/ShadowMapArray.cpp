@@ -1,10 +1,26 @@
 #include "ShadowMapArray.h"
 
-#include <engine/Error.h>
-
 #include <string>
 
 namespace shadows {
+
+namespace {
+
+/// Checks `framebuffer`, one of the targets of `layers` maps of `resolution`², saying what was asked where
+/// the driver could not allocate it.
+void checkAllocated(const engine::gl::Framebuffer& framebuffer, int resolution, int layers,
+                    const ShadowPlan& plan) {
+    try {
+        framebuffer.check();
+    } catch (const engine::GlError& error) {
+        throw MapAllocationError("the shadow maps, " + std::to_string(layers) +
+                                 (layers == 1 ? " layer of " : " layers of ") + std::to_string(resolution) +
+                                 "² (" + std::to_string(plan.mapBytes(resolution, layers) >> 20) +
+                                 " MiB), could not be allocated (" + error.what() + ")");
+    }
+}
+
+} // namespace
 
 ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& plan)
     : depth(plan.depthFormat, glm::ivec2(resolution), layers) {
@@ -21,7 +37,7 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
             blurFramebuffer.emplace("shadow moments blur");
             blurFramebuffer->attach(GL_COLOR_ATTACHMENT0, *blurTemporary, 0);
             blurFramebuffer->setDrawBuffers({GL_COLOR_ATTACHMENT0});
-            blurFramebuffer->check();
+            checkAllocated(*blurFramebuffer, resolution, layers, plan);
         }
     }
     framebuffers.reserve(static_cast<std::size_t>(layers));
@@ -34,17 +50,7 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
         } else {
             framebuffer.setDrawBuffers({});
         }
-        try {
-            framebuffer.check();
-        } catch (const engine::GlError& error) {
-            // Drivers report a layer they could not allocate as an incomplete attachment: say what was asked.
-            throw engine::GlError(
-                "shadow maps: " + std::to_string(layers) + " layers of " + std::to_string(resolution) +
-                "² (" + std::to_string(bytes(plan) >> 20) +
-                " MiB) could not be drawn into; lower ShadowSettings::resolution or the maps in "
-                "use (" +
-                error.what() + ")");
-        }
+        checkAllocated(framebuffer, resolution, layers, plan);
     }
 }
 

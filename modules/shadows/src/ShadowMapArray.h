@@ -2,6 +2,7 @@
 
 #include <shadows/ShadowPlan.h>
 
+#include <engine/Error.h>
 #include <engine/gl/Framebuffer.h>
 #include <engine/gl/TextureArray.h>
 
@@ -10,11 +11,19 @@
 
 namespace shadows {
 
+/// @brief The driver could not allocate a ShadowMapArray's targets: it reports a target it could not allocate
+/// as an incomplete attachment.
+class MapAllocationError : public engine::GlError {
+public:
+    using GlError::GlError;
+};
+
 /// @brief The render targets of every shadow map of a frame, one layer each (a light's map, a cascade, a cube
 /// face), in the formats the plan names: the depth, and the gradient or the filtered moments (with the blur's
 /// one temporary layer) where the technique stores them. Layers let the lighting pass pick a cascade or a
 /// cube face per fragment.
 struct ShadowMapArray {
+    /// @throws MapAllocationError where the driver cannot allocate them.
     ShadowMapArray(int resolution, int layers, const ShadowPlan& plan);
 
     /// @brief GPU memory of these targets, bytes (ShadowPlan::mapBytes).

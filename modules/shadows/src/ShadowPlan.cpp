@@ -178,8 +178,7 @@ std::size_t ShadowPlan::mapBytes(int resolution, int layers) const {
 }
 
 int budgetedResolution(const ShadowPlan& plan, int resolution, int layers, std::size_t budgetBytes) {
-    constexpr int kSmallestSide = 64;
-    while (resolution > kSmallestSide && plan.mapBytes(resolution, layers) > budgetBytes) {
+    while (resolution > kSmallestMapSide && plan.mapBytes(resolution, layers) > budgetBytes) {
         resolution /= 2;
     }
     return resolution;

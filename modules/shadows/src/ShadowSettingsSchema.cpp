@@ -101,8 +101,9 @@ const std::vector<SettingRow>& rows() {
         {"technique", "", "technique", "Visibility function (see the techniques table).",
          choice<ShadowTechnique, &S::technique>(), always, "--technique"},
         {"resolution", "texels", "shadow map", "Width and height of the shadow map.",
-         IntSetting{&S::resolution,
-                    [](const S&) { return fixed({.min = 64, .max = 16384, .powersOfTwo = true}); }},
+         IntSetting{
+             &S::resolution,
+             [](const S&) { return fixed({.min = kSmallestMapSide, .max = 16384, .powersOfTwo = true}); }},
          always, "--shadow-size"},
         {"depthFormat", "", "depth format", "Depth format of the shadow map.",
          choice<DepthFormat, &S::depthFormat>(), always, "--depth-format"},

@@ -112,7 +112,13 @@ void VirtualShadowMaps::allocatePool(int tableLayers, std::size_t wanted) {
     const std::size_t layers = std::clamp<std::size_t>((wanted + perLayer - 1) / perLayer, 1, layout.layers);
     ShadowPlan atlasPlan = plan_;
     atlasPlan.blursMoments = false; // blurred a tile at a time (blurMoments), not a whole layer
-    auto atlas = std::make_unique<ShadowMapArray>(tilesPerRow * tile_, static_cast<int>(layers), atlasPlan);
+    std::unique_ptr<ShadowMapArray> atlas;
+    try {
+        atlas = std::make_unique<ShadowMapArray>(tilesPerRow * tile_, static_cast<int>(layers), atlasPlan);
+    } catch (const MapAllocationError& error) {
+        throw MapAllocationError(std::string(error.what()) +
+                                 "; lower virtualBudgetMiB to what this driver holds");
+    }
     const int total = static_cast<int>(perLayer * layers);
     if (atlas_ && poolTableLayers_ == tableLayers) {
         // Grown: the resident pages keep their tiles, copied to where those tiles lie in the new atlas.

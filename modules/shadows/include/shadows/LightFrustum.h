@@ -85,6 +85,9 @@ struct FitView {
 
 /// @brief Most cascades a directional light can have (ShadowSettings::cascadeCount).
 inline constexpr int kMaxCascades = 4;
+/// @brief The smallest side a whole map takes when it is sized down (to the view, to a memory budget, to what
+/// the driver allocates): its margins and a kernel's reach still leave most of it to the view.
+inline constexpr int kSmallestMapSide = 64;
 
 /// @brief The practical split scheme (Zhang, Sun, Xu, Lun, "Parallel-Split Shadow Maps for Large-scale
 /// Virtual Environments", VRCIA 2006, section 3.2): split i of `count` at w·n·(f/n)^(i/count) + (1−w)·(n +

@@ -81,10 +81,10 @@ sampleLightRects(std::span<const float> depth, glm::ivec2 size, const glm::mat4&
 [[nodiscard]] float sliceTexelsPerPixel(const LightRect& rect, float viewDepth, int resolution,
                                         const glm::mat4& projection, int imageHeight);
 
-/// @brief The side of the smallest map, a power of two from 64 up to `resolution`, on which each of `count`
-/// cascades' slices (sampleSliceIndex) has a texel no larger than `texelPixels` pixels at its near depth,
-/// with `marginTexels` of margin on each side; `resolution` when `texelPixels` is not positive or a slice's
-/// pixel has no size. Empty slices ask for nothing.
+/// @brief The side of the smallest map, a power of two from kSmallestMapSide up to `resolution`, on which
+/// each of `count` cascades' slices (sampleSliceIndex) has a texel no larger than `texelPixels` pixels at its
+/// near depth, with `marginTexels` of margin on each side; `resolution` when `texelPixels` is not positive or
+/// a slice's pixel has no size. Empty slices ask for nothing.
 [[nodiscard]] int viewResolution(const std::array<LightRect, kSampleSlices>& rects,
                                  const std::array<glm::vec2, kSampleSlices>& sliceDepths, int count,
                                  int resolution, float marginTexels, float texelPixels,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <shadows/LightFrustum.h>
 #include <shadows/ShadowSettings.h>
 #include <shadows/ShadowTechniqueTraits.h>
 
@@ -101,8 +102,8 @@ struct ShadowPlan {
 };
 
 /// @brief The side whole maps take within a memory budget: `resolution`, halved while `layers` maps of `plan`
-/// take more than `budgetBytes` (ShadowPlan::mapBytes), down to 64, where it stops however many bytes they
-/// take.
+/// take more than `budgetBytes` (ShadowPlan::mapBytes), down to kSmallestMapSide, where it stops however
+/// many bytes they take.
 [[nodiscard]] int budgetedResolution(const ShadowPlan& plan, int resolution, int layers,
                                      std::size_t budgetBytes);
 
