@@ -36,11 +36,12 @@ peer_as() { # peer_as SCENE_FILE NAME OPTION...: one peer run, into $work/osg/<s
     peer_run "$scene" "$work/osg/$(basename "${scene%.*}")/$name" "$@"
 }
 peer_rounds() { # peer_rounds SCENE STEP COMMAND...: 3 rounds of COMMAND, each given its round as a last argument,
-    # the peer's VDSM timed before the first and after each, into $work/osg-STEP/SCENE/<n> (results.py load_rounds):
+    # the peer's VDSM timed before the first (unless a run just before left it there) and after each, into
+    # $work/osg-STEP/SCENE/<n> (results.py load_rounds):
     # the machine's speed drifts by up to 2x within a minute, so each round is compared with its neighbours.
     local scene=$1 step=$2 round
     shift 2
-    peer_run "corpus/$scene.glb" "$work/osg-$step/$scene/0" --technique vdsm
+    [ -e "$work/osg-$step/$scene/0.json" ] || peer_run "corpus/$scene.glb" "$work/osg-$step/$scene/0" --technique vdsm
     for round in 1 2 3; do
         "$@" "$round"
         peer_run "corpus/$scene.glb" "$work/osg-$step/$scene/$round" --technique vdsm
@@ -76,7 +77,10 @@ real_models_steps() { # steps 4 to 6, the "Real models" section, which the full 
         "$bench" --scene "$1" --taps 4 --resolutions 2048 --frames 2 --peer "$work/osg" --out "$work/real/$1/$2"
     }
     for model in "${corpus[@]}"; do
-        peer "corpus/$model.glb" vdsm sm lispsm ssm
+        peer "corpus/$model.glb" sm lispsm ssm vdsm
+        # The VDSM run the accuracy rows read is also the first of the runs bracketing the rounds.
+        mkdir -p "$work/osg-real/$model"
+        cp "$work/osg/$model/vdsm.json" "$work/osg-real/$model/0.json"
         peer_rounds "$model" real real_timed "$model"
     done
 
