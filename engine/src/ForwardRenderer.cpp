@@ -414,7 +414,11 @@ void ForwardRenderer::copyViewDepth(const FrameTarget& target) const {
 FrameStats ForwardRenderer::lightingPass(const FrameContext& frame, std::span<Module* const> modules) {
     glBindFramebuffer(GL_FRAMEBUFFER, frame.target.framebuffer);
     glViewport(0, 0, frame.target.size.x, frame.target.size.y);
-    glEnable(GL_FRAMEBUFFER_SRGB);
+    if (encodeSrgb) {
+        glEnable(GL_FRAMEBUFFER_SRGB);
+    } else {
+        glDisable(GL_FRAMEBUFFER_SRGB);
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);

@@ -57,6 +57,28 @@ INSTANTIATE_TEST_SUITE_P(Cases, LitCubeGLTest,
                                          DirectionalCase{"behindOnlyAmbient", 120.0f, 1.0f, 0.2f}),
                          [](const auto& test) { return std::string(test.param.name); });
 
+TEST(RenderGLTest, WithoutSrgbEncodingTheTargetStoresTheLinearColour) {
+    glTestContext();
+    LitCubeScene fixture(kBase);
+    fixture.addDirectionalLight(0.0f, 1.0f);
+    Engine engine;
+    engine.renderer().environment.ambient = glm::vec3(0.0f);
+    engine.renderer().environment.background = {0.2f, 0.4f, 0.6f};
+    engine.renderer().encodeSrgb = false;
+    RenderTarget target(kTargetSize);
+    engine.renderFrame(fixture.scene, fixture.camera, target);
+    const Image image = target.readPixels();
+    // The face lit head-on is kBase itself, 0.5 stored as 128 (encoded it would be 188), the clear colour
+    // likewise.
+    const auto expectLinear = [&](glm::ivec2 at, glm::vec3 linear) {
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(image.at(at.x, at.y)[c], 255.0f * linear[c], 1.0f) << "channel " << c;
+        }
+    };
+    expectLinear(kTargetSize / 2, kBase);
+    expectLinear({1, 1}, {0.2f, 0.4f, 0.6f});
+}
+
 TEST(RenderGLTest, SpotLightFallsOffWithInverseSquareAndCone) {
     glTestContext();
     LitCubeScene fixture(kBase);

@@ -41,6 +41,7 @@ struct Options {
     bool ownSampleDepth = false;
     bool drawHiddenFaces = false;
     bool drawShadowlessPlanes = false;
+    bool linearOutput = false;
     bool tuneAllocator = true;
 };
 
@@ -61,6 +62,7 @@ constexpr const char* kUsage = R"(usage: gs-render [options]
   --draw-shadowless-planes  draw flat casters that shadow nothing into the maps too (left out by default
                    where the technique only compares depths)
   --redraw-maps    draw the shadow maps every frame, as a moving view does (else a still view keeps them)
+  --linear-output  store the linear colour without the sRGB encode, as fixed-function OpenGL does (darker)
   --allocator A    tuned (mallopt on CPU rasterisers) or default  [tuned]
   --list-techniques  print every shadow technique's name, one a line, and exit
   --help           this text
@@ -189,6 +191,8 @@ Options parse(int argc, char** argv) {
             options.drawHiddenFaces = true;
         } else if (arg == "--draw-shadowless-planes") {
             options.drawShadowlessPlanes = true;
+        } else if (arg == "--linear-output") {
+            options.linearOutput = true;
         } else if (arg == "--redraw-maps") {
             settings.reuseUnchangedMaps = false;
         } else if (arg == "--allocator") {
@@ -256,6 +260,7 @@ int main(int argc, char** argv) {
         engine.renderer().lightingHiddenFaces =
             options.drawHiddenFaces ? engine::HiddenFaces::Draw : engine::HiddenFaces::Skip;
         engine.renderer().leaveOutShadowlessChunks = !options.drawShadowlessPlanes;
+        engine.renderer().encodeSrgb = !options.linearOutput;
         const shadows::ShadowModule* shadowModule = nullptr;
         if (options.shadows) {
             shadowModule = &static_cast<const shadows::ShadowModule&>(

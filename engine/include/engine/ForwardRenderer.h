@@ -122,6 +122,10 @@ public:
     /// What the lighting pass does with the faces of closed parts that their other faces hide from the camera
     /// (HiddenFaces). Default Skip: the same image at about half a closed mesh's triangles.
     HiddenFaces lightingHiddenFaces = HiddenFaces::Skip;
+    /// Encode the lighting pass's linear colour where the target stores sRGB (GL_FRAMEBUFFER_SRGB), as a
+    /// display expects it. Default true; false stores the linear values as they are, as fixed-function OpenGL
+    /// (the osgShadow peer) does, darker in the mid-tones: what the encode costs, to compare.
+    bool encodeSrgb = true;
     /// Leave out of a shadow pass the flat chunks that shadow nothing, where the pass asks
     /// (MeshPass::castersFor). Default true; false draws them, to compare.
     bool leaveOutShadowlessChunks = true;
