@@ -340,12 +340,12 @@ def real_models(real, scaling):
     gaps = [c["unshadowedFrameMs"]["median"] - c["peerUnshadowedFrameMs"]["median"] for c in real["scenes"]
             if c.get("peerUnshadowedFrameMs") and c["triangles"] < 20000]
     gap = f" (here {min(gaps):.1f} to {max(gaps):.1f} ms over the models under 20k triangles)" if gaps else ""
-    # Part of it is the sRGB encode, which the peer's linear target does without (renderer options, step 6).
+    # Part of it is the sRGB encode, which the peer's linear target does without (step 6's alternated runs).
     encode = ", ".join(f"{model} {saved:.1f} of {frame:.1f} ms" for model, (saved, frame) in
-                       ((model, encode_ms(model)) for model in sorted(p.name for p in (work / "engine").iterdir())))
+                       ((folder.name, encode_ms(folder)) for folder in sorted((work / "encode").iterdir())))
     encode_cost = (" Our target stores sRGB, which the renderer encodes per pixel, and the peer's the linear colour: "
-                   f"the encode costs {encode} of our unshadowed frame (`linear output` in the renderer options below; "
-                   "on the larger frames within the spread of `repeat`)." if encode else "")
+                   f"the encode costs {encode} of our unshadowed frame (`gs-render --linear-output` stores the colour "
+                   "as computed; medians over 5 rounds, each round's two runs back to back)." if encode else "")
     out.append("Where the goals are missed, and why. (1) Unshadowed: our lighting pass shades every "
                "pixel with Blinn-Phong; osgShadow's fixed-function lighting is evaluated per vertex, so its fragments "
                "only interpolate a colour. On llvmpipe a 640x480 frame of per-pixel lighting costs a few "
@@ -376,13 +376,15 @@ def real_models(real, scaling):
     out.extend(model_sections)
 
 
-def encode_ms(model):
-    """What the sRGB encode costs `model`'s unshadowed frame in the renderer options' runs (step 6), and that
-    frame, ms."""
-    def frame(variant):
-        report = json.loads((work / "engine" / model / f"none-{variant}" / "report.json").read_text())
+def encode_ms(folder):
+    """What the sRGB encode costs a model's unshadowed frame (step 6's runs in `folder`, the defaults and
+    --linear-output alternated over rounds): the median over the rounds of the difference, and of the frame, ms."""
+    def frame(variant, round_):
+        report = json.loads((folder / f"{variant}-{round_}" / "report.json").read_text())
         return report["frameMillisecondsMedian"]
-    return frame("plain") - frame("linear-output"), frame("plain")
+    rounds = sorted(int(path.name.split("-")[1]) for path in folder.glob("plain-*"))
+    return (statistics.median(frame("plain", r) - frame("linear-output", r) for r in rounds),
+            statistics.median(frame("plain", r) for r in rounds))
 
 
 def engine_options():
@@ -395,13 +397,11 @@ def engine_options():
                "keeps glibc's mmap/trim thresholds; `unchunked` draws each mesh whole (culling then has nothing to "
                "cull within a mesh); `every face` draws the faces that closed meshes hide from the camera and the "
                "light too (`--draw-hidden-faces --caster-faces both`; docs/MODULES.md, \"Closed parts\"), as before "
-               "they were left out; `linear output` stores the colour without the sRGB encode (`--linear-output`), "
-               "as the peer's fixed-function pass stores it; `repeat` is the defaults run again, so it shows how far "
-               "two identical runs differ "
+               "they were left out; `repeat` is the defaults run again, so it shows how far two identical runs differ "
                "(ratios closer to 1 than that are noise). Page faults per frame are the robust measure of the "
                "allocator setting.\n")
-    rows = ["| model | technique | defaults | prepass | default allocator | unchunked | every face | linear output | repeat | page faults per frame: defaults / default allocator |",
-            "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    rows = ["| model | technique | defaults | prepass | default allocator | unchunked | every face | repeat | page faults per frame: defaults / default allocator |",
+            "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for model in sorted(p.name for p in folder.iterdir()):
         for technique in ("none", "gsm", "pcf-gsm-average"):
             def report(variant):
@@ -409,8 +409,7 @@ def engine_options():
             base = report("plain")["frameMillisecondsMedian"]
             rows.append(f"| {model} | {technique} | {base:.1f} ms | " +
                         " | ".join(f"{report(v)['frameMillisecondsMedian'] / base:.2f}x"
-                                   for v in ("prepass", "default-allocator", "unchunked", "every-face", "linear-output",
-                                             "plain-again")) +
+                                   for v in ("prepass", "default-allocator", "unchunked", "every-face", "plain-again")) +
                         f" | {report('plain')['pageFaultsPerFrame']:.0f} / {report('default-allocator')['pageFaultsPerFrame']:.0f} |")
     out.append("\n".join(rows) + "\n")
 
