@@ -379,12 +379,11 @@ def real_models(real, scaling):
 def encode_ms(folder):
     """What the sRGB encode costs a model's unshadowed frame (step 6's runs in `folder`, the defaults and
     --linear-output alternated over rounds): the median over the rounds of the difference, and of the frame, ms."""
-    def frame(variant, round_):
-        report = json.loads((folder / f"{variant}-{round_}" / "report.json").read_text())
-        return report["frameMillisecondsMedian"]
-    rounds = sorted(int(path.name.split("-")[1]) for path in folder.glob("plain-*"))
-    return (statistics.median(frame("plain", r) - frame("linear-output", r) for r in rounds),
-            statistics.median(frame("plain", r) for r in rounds))
+    def frame(run):
+        return json.loads((run / "report.json").read_text())["frameMillisecondsMedian"]
+    plain = {run.name.split("-")[1]: frame(run) for run in folder.glob("plain-*")}
+    saved = [plain[round_] - frame(folder / f"linear-output-{round_}") for round_ in plain]
+    return statistics.median(saved), statistics.median(plain.values())
 
 
 def engine_options():
