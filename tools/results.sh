@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only real|defaults|virtual|soft|cost|sizing|still] [work folder, default out/results]
+# Usage: bash tools/results.sh [--only real|defaults|filtered|virtual|soft|cost|sizing|still] [work folder, default
+# out/results]
 # --only real runs steps 4 to 6 alone, --only defaults steps 4 to 7 (the recommendation weighs the real models' frame
-# times), --only virtual step 11 (with the osgShadow peer's VDSM rows it reads), --only soft step 12, --only cost step
-# 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and replaces only those steps' sections of
-# docs/RESULTS.md ("Real models"; those and "Defaults" and "PCF over GSM against single-tap GSM"; "Virtual maps",
-# "Soft shadows", "Cost model", "Maps sized to the view", "A still view keeps its maps"), which then say so.
+# times), --only filtered step 3, --only virtual step 11 (with the osgShadow peer's VDSM rows it reads), --only soft
+# step 12, --only cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and replaces only
+# those steps' sections of docs/RESULTS.md ("Real models"; those and "Defaults" and "PCF over GSM against single-tap
+# GSM"; "Filtered families: ..."; "Virtual maps", "Soft shadows", "Cost model", "Maps sized to the view", "A still
+# view keeps its maps"), which then say so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        real | defaults | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'real', 'defaults', 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2; exit 2 ;;
+        real | defaults | filtered | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'real', 'defaults', 'filtered', 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2
+           exit 2 ;;
     esac
     shift 2
 fi
@@ -151,16 +154,6 @@ reference="pcfTaps=5,pcfRadius=2,resolution=1024,footprintNormalOffset=false,gra
     --config "naive-circular8:technique=pcf-gsm-naive,pcfLayout=circular8,pcfRadius=1" \
     --out "$work/reproduction"
 
-# 3. Filtered families: VSM, EVSM and MSM light leaking, and early-out speed versus the same jittered kernel.
-"$bench" --scene knob --scene thin-shell --scene spheres --techniques vsm,evsm,msm --resolutions 1024 --frames 7 \
-    --config "msm-16bit:technique=msm,msmQuantize16=true,resolution=1024" \
-    --config "vsm-no-reduction:technique=vsm,lightBleedingReduction=0,resolution=1024" \
-    --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,resolution=1024" \
-    --config "jittered32-early8:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=8,resolution=1024" \
-    --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,resolution=1024" \
-    --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,resolution=1024" \
-    --out "$work/filtered"
-
 real_models_steps
 
 # 7. Defaults: every technique at its defaults over the Defaults views (defaults_views), accuracy only (the Defaults
@@ -212,6 +205,24 @@ elif [ "${only[1]}" = virtual ]; then
     for model in suzanne fzk-haus cylinder-engine terrain; do
         peer "corpus/$model.glb" vdsm
     done
+fi
+
+if [ "${only[1]:-filtered}" = filtered ]; then
+[ ${#only[@]} -eq 0 ] || bash tools/corpus.sh
+# 3. Filtered families: VSM, EVSM and MSM light leaking, and early-out speed versus the same jittered kernel.
+"$bench" --scene knob --scene thin-shell --scene spheres --techniques vsm,evsm,msm --resolutions 1024 --frames 7 \
+    --config "vsm-32bit:technique=vsm,moments16=false,resolution=1024" \
+    --config "msm-32bit:technique=msm,moments16=false,resolution=1024" \
+    --config "vsm-no-reduction:technique=vsm,lightBleedingReduction=0,resolution=1024" \
+    --config "jittered32-full:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=0,resolution=1024" \
+    --config "jittered32-early8:technique=pcf-jittered,jitterTaps=32,earlyOutTestTaps=8,resolution=1024" \
+    --config "jittered64-full:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=0,resolution=1024" \
+    --config "jittered64-early16:technique=pcf-jittered,jitterTaps=64,earlyOutTestTaps=16,resolution=1024" \
+    --out "$work/filtered"
+#    The moments' precision over the Defaults views: vsm and msm at their defaults (16-bit moments) and in 32-bit
+#    floats, accuracy only.
+defaults_views "$work/moments16" --techniques vsm,msm --config "vsm-32bit:technique=vsm,moments16=false" \
+    --config "msm-32bit:technique=msm,moments16=false"
 fi
 
 if [ "${only[1]:-cost}" = cost ]; then

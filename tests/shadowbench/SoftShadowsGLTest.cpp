@@ -176,7 +176,7 @@ TEST(SoftShadowsGLTest, MsmSoftUnderALightOfNoSizeIsMsm) {
     // msm-soft's moments are msm's 16-bit ones.
     shadows::ShadowSettings settings;
     settings.technique = ShadowTechnique::Msm;
-    settings.msmQuantize16 = true;
+    settings.moments16 = true;
     const Accuracy msm = bench.measure(scene, settings);
     settings.technique = ShadowTechnique::MsmSoft;
     const Accuracy soft = bench.measure(scene, settings);

@@ -1,4 +1,4 @@
-// VSM, EVSM, MSM (32-bit and 16-bit) and jittered PCF with early-out inside the engine.
+// VSM and MSM (16-bit and 32-bit), EVSM and jittered PCF with early-out inside the engine.
 #include "../engine/GLTestContext.h"
 
 #include <content/GltfLoader.h>
@@ -8,8 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 
 using namespace shadows;
 
@@ -37,7 +39,7 @@ std::vector<float> render(const content::LoadedScene& loaded, const ShadowSettin
 struct FilteredCase {
     const char* name;
     ShadowTechnique technique;
-    bool quantize;
+    bool moments16;
     int earlyOut;
 };
 
@@ -50,7 +52,7 @@ TEST_P(FilteredShadowsGLTest, RendersKnobAndSpheresWithBoundedVisibility) {
         const content::LoadedScene loaded = scene(name);
         ShadowSettings settings;
         settings.technique = GetParam().technique;
-        settings.msmQuantize16 = GetParam().quantize;
+        settings.moments16 = GetParam().moments16;
         settings.earlyOutTestTaps = GetParam().earlyOut;
         settings.resolution = 512;
         settings.debugView = ShadowDebugView::Visibility;
@@ -70,7 +72,8 @@ TEST_P(FilteredShadowsGLTest, RendersKnobAndSpheresWithBoundedVisibility) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, FilteredShadowsGLTest,
-                         testing::Values(FilteredCase{"vsm", ShadowTechnique::Vsm, false, 0},
+                         testing::Values(FilteredCase{"vsm16", ShadowTechnique::Vsm, true, 0},
+                                         FilteredCase{"vsm32", ShadowTechnique::Vsm, false, 0},
                                          FilteredCase{"msm32", ShadowTechnique::Msm, false, 0},
                                          FilteredCase{"evsm", ShadowTechnique::Evsm, false, 0},
                                          FilteredCase{"msm16", ShadowTechnique::Msm, true, 0},
@@ -135,18 +138,62 @@ TEST(FilteredShadowsGLTest, ResourcesMatchTheTechnique) {
     engine::RenderTarget target({64, 48});
     engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
     const std::size_t texels = 256u * 256u;
-    // D24 depth + RGBA32F moments, one level; no blur by default, so no temporary level.
-    EXPECT_EQ(module.stats().bytes, texels * 4 + texels * 16);
+    // D24 depth + RGBA16 moments (64 bits per texel), one level; no blur by default, so no temporary level.
+    EXPECT_EQ(module.stats().bytes, texels * 4 + texels * 8);
     settings.momentBlurRadius = 2; // + the blur's temporary level
     module.setSettings(settings);
     engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    EXPECT_EQ(module.stats().bytes, texels * 4 + texels * 8 + texels * 8);
+    settings.moments16 = false; // RGBA32F
+    module.setSettings(settings);
+    engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
     EXPECT_EQ(module.stats().bytes, texels * 4 + texels * 16 + texels * 16);
-    settings.msmQuantize16 = true; // 64 bits per texel
+    settings.technique = ShadowTechnique::Vsm; // RG32F
     module.setSettings(settings);
     engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
     EXPECT_EQ(module.stats().bytes, texels * 4 + texels * 8 + texels * 8);
+    settings.moments16 = true; // RG16
+    module.setSettings(settings);
+    engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
+    EXPECT_EQ(module.stats().bytes, texels * 4 + texels * 4 + texels * 4);
     settings.technique = ShadowTechnique::HardCompare;
     module.setSettings(settings);
     engine.renderFrame(loaded.scene, *loaded.scene.firstCamera(), target);
     EXPECT_EQ(module.stats().bytes, texels * 4);
+}
+
+// 16-bit moments (the default) shade as 32-bit float ones do: no pixel flips, and the mean difference stays
+// within the quantisation's (about 3e-5 of visibility here), on a curved caster over a ground (knob) and a
+// spot light's perspective map (spheres).
+TEST(FilteredShadowsGLTest, SixteenBitMomentsShadeAsFloatMomentsDo) {
+    for (const ShadowTechnique technique : {ShadowTechnique::Vsm, ShadowTechnique::Msm}) {
+        for (const char* name : {"knob", "spheres"}) {
+            const content::LoadedScene loaded = scene(name);
+            ShadowSettings settings;
+            settings.technique = technique;
+            settings.resolution = 512;
+            settings.debugView = ShadowDebugView::Visibility;
+            const std::vector<float> sixteen = render(loaded, settings);
+            settings.moments16 = false;
+            const std::vector<float> floats = render(loaded, settings);
+            std::size_t covered = 0;
+            std::size_t flipped = 0;
+            double difference = 0.0;
+            for (std::size_t i = 0; i < floats.size(); i += 4) {
+                if (floats[i + 3] < 0.5f) {
+                    continue; // background
+                }
+                ++covered;
+                const float delta = std::abs(sixteen[i] - floats[i]);
+                flipped += delta > 0.5f;
+                difference += delta;
+            }
+            const double mean = difference / static_cast<double>(std::max<std::size_t>(covered, 1));
+            std::cout << "[ measured ] " << toString(technique) << " on " << name << ": " << flipped << " of "
+                      << covered << " pixels differ by > 0.5, mean difference " << mean << "\n";
+            ASSERT_GT(covered, floats.size() / 4 / 4) << name;
+            EXPECT_LE(flipped, covered / 1000) << toString(technique) << " on " << name;
+            EXPECT_LT(mean, 2e-4) << toString(technique) << " on " << name;
+        }
+    }
 }

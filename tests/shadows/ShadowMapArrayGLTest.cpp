@@ -48,7 +48,7 @@ TEST(ShadowMapArrayGLTest, MomentsHaveOneLevelInThePlansFormatAndAreSampled) {
     glTestContext();
     ShadowSettings settings;
     settings.technique = ShadowTechnique::Msm;
-    settings.msmQuantize16 = true;
+    settings.moments16 = true;
     settings.momentBlurRadius = 1;
     const ShadowPlan plan = ShadowPlan::resolve(settings);
     const ShadowMapArray target(64, 2, plan);
@@ -72,7 +72,7 @@ TEST(ShadowMapArrayGLTest, UnblurredMomentsHaveNoBlurTemporary) {
     const ShadowMapArray target(64, 1, plan);
     ASSERT_TRUE(target.moments);
     EXPECT_FALSE(target.blurTemporary || target.blurFramebuffer);
-    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 8u); // D24 depth and RG32F moments
+    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 64u * 64u * 4u); // D24 depth and RG16 moments
 }
 
 TEST(ShadowMapArrayGLTest, SoftMomentsHaveTheirMipChainCountedInTheirBytes) {

@@ -68,11 +68,13 @@ TEST(ShadowPlanTest, ReceiverPlanePerTapComparesInHardwareOverThePattern) {
 
 TEST(ShadowPlanTest, QuantisedMomentsAreDeclaredOnceForBothPasses) {
     ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::Msm};
+    settings.moments16 = false;
     ShadowPlan plan = ShadowPlan::resolve(settings);
     EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RGBA32F));
     EXPECT_EQ(plan.momentBytesPerTexel, 16u);
     EXPECT_EQ(plan.momentsClear, glm::vec4(1.0f));
-    settings.msmQuantize16 = true;
+    EXPECT_FALSE(has(plan.lightingDefines, "GS_SHADOW_MSM_QUANTIZED"));
+    settings.moments16 = true; // the default
     plan = ShadowPlan::resolve(settings);
     EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RGBA16));
     EXPECT_EQ(plan.momentBytesPerTexel, 8u);
@@ -80,6 +82,23 @@ TEST(ShadowPlanTest, QuantisedMomentsAreDeclaredOnceForBothPasses) {
     EXPECT_TRUE(has(plan.lightingDefines, "GS_SHADOW_MSM_QUANTIZED"));
     EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_MSM_QUANTIZED"));
     EXPECT_TRUE(has(plan.depthDefines, "GS_SHADOW_STORE_MOMENTS4"));
+}
+
+TEST(ShadowPlanTest, VsmMomentsAreRG16UnlessMoments16IsOff) {
+    ShadowSettings settings = ShadowSettings{.technique = ShadowTechnique::Vsm};
+    ShadowPlan plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RG16));
+    EXPECT_EQ(plan.momentBytesPerTexel, 4u);
+    EXPECT_EQ(plan.mapBytes(2048, 1), 2048u * 2048u * (4u + 4u)); // D24 + RG16: 32 MiB
+    settings.moments16 = false;
+    plan = ShadowPlan::resolve(settings);
+    EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RG32F));
+    EXPECT_EQ(plan.momentBytesPerTexel, 8u);
+    // Neither evsm (its warps overflow 16-bit floats at the default exponents) nor the depth-only techniques
+    // take the setting.
+    settings.technique = ShadowTechnique::Evsm;
+    settings.moments16 = true;
+    EXPECT_EQ(ShadowPlan::resolve(settings).momentsFormat, static_cast<GLenum>(GL_RGBA32F));
 }
 
 TEST(ShadowPlanTest, DepthFormatsAndCasterOffsets) {

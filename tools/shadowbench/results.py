@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """Writes docs/RESULTS.md and its plots from the results.json files of tools/results.sh's shadowbench runs.
 
-usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only real|defaults|virtual|soft|cost|sizing|still]
+usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only real|defaults|filtered|virtual|soft|cost|sizing|still]
 
-With --only real (virtual, soft, cost, sizing, still), only steps 4-6's (11's, 12's, 10's, 13's, 14's) section,
-"Real models" ("Virtual maps", "Soft shadows", "Cost model", "Maps sized to the view", "A still view keeps its
-maps") up to the next "## " section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says
+With --only real (filtered, virtual, soft, cost, sizing, still), only steps 4-6's (3's, 11's, 12's, 10's, 13's,
+14's) section, "Real models" ("Filtered families: ...", "Virtual maps", "Soft shadows", "Cost model", "Maps sized to
+the view", "A still view keeps its maps") up to the next "## " section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says
 so; every other section stays as the last full run wrote it. --only defaults regenerates steps 4-7's three: "Real
 models", "Defaults" and "PCF over GSM against single-tap GSM".
 """
@@ -27,6 +27,7 @@ from peer_rounds import bracketed, median_ratio  # noqa: E402
 
 # The sections --only regenerates alone, by its option.
 PARTIAL_SECTIONS = {"real": "## Real models", "defaults": "## Defaults", "virtual": "## Virtual maps",
+                    "filtered": "## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out",
                     "soft": "## Soft shadows", "cost": "## Cost model",
                     "sizing": "## Maps sized to the view", "still": "## A still view keeps its maps"}
 
@@ -126,6 +127,67 @@ def by_label(doc, label, scene="knob"):
 out = []
 
 
+def filtered_section(filtered, moments16):
+    """The filtered families on three scenes, then the moments' precision over the Defaults views."""
+    out.append("## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out\n")
+    out.append("| scene | configuration | acne | leak | MAE | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 | lighting ms "
+               "| memory | full-kernel pixels |")
+    out.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for r in filtered["results"]:
+        full = f"{100 * r['fullKernelFraction']:.1f} %" if r["fullKernelFraction"] >= 0 else "—"
+        out.append(f"| {r['scene']} | {r['label']} | {100 * r['acneRate']:.2f} % | {100 * r['leakRate']:.2f} % | "
+                   f"{r['mae']:.4f} | {edges(r)} | {r['lightingPassMs']['median']:.2f} | {r['shadowBytes'] / 2**20:.1f} MiB | "
+                   f"{full} |")
+    out.append("")
+    for scene in sorted({r["scene"] for r in filtered["results"]}):
+        full32, early32 = by_label(filtered, "jittered32-full", scene), by_label(filtered, "jittered32-early8", scene)
+        full64, early64 = by_label(filtered, "jittered64-full", scene), by_label(filtered, "jittered64-early16", scene)
+        vsm, msm = by_label(filtered, "vsm-1024-d24", scene), by_label(filtered, "msm-1024-d24", scene)
+        evsm = by_label(filtered, "evsm-1024-d24", scene)
+        out.append(f"- **{scene}**: early-out speed-up {full32['lightingPassMs']['median'] / early32['lightingPassMs']['median']:.2f}x "
+                   f"(32 taps, 8 test) and {full64['lightingPassMs']['median'] / early64['lightingPassMs']['median']:.2f}x "
+                   f"(64 taps, 16 test) on the lighting pass (the soft shadows reference measured 1.5x and 3.0x on its "
+                   f"scenes); MAE cost {early32['mae'] - full32['mae']:+.4f} / {early64['mae'] - full64['mae']:+.4f}; "
+                   f"{100 * early32['fullKernelFraction']:.1f} % of pixels took the full kernel. Light leaking: VSM "
+                   f"{100 * vsm['leakRate']:.2f} %, EVSM {100 * evsm['leakRate']:.2f} %, MSM {100 * msm['leakRate']:.2f} %.")
+    out.append("")
+
+    moments_precision(moments16)
+
+
+def moments_precision(views):
+    """vsm and msm with 16-bit moments (the default) against 32-bit floats over the Defaults views: the floor, the
+    rates and the memory each precision holds."""
+    rows = [r for r in views["results"] if not r["peer"]]
+    per_label = {}
+    for r in rows:
+        per_label.setdefault(r["label"], {})[r["scene"]] = r
+    out.append(f"16-bit moments (`moments16`, the default: vsm's in RG16, msm's in RGBA16 through the optimised basis) "
+               f"against 32-bit floats over the {len(next(iter(per_label.values())))} Defaults views "
+               f"({views['width']}x{views['height']}, accuracy only, the floor of \"Defaults\"): views meeting the "
+               "floor, the mean over views of acne + leak + darkening (the default rule's error), the worst view's "
+               "rates, the mean MAE and edge placement (mean over views of the per-view mean, both ways), the views "
+               "each precision meets the floor in and the other does not, and the memory of one 2048² map.\n")
+    lines = ["| technique | moments | views meeting the floor | mean error | worst acne / leak / darkening | mean MAE | "
+             "edges true→rendered / rendered→true px | views only this precision meets | memory per 2048² map |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for technique in ("vsm", "msm"):
+        sixteen, thirty_two = per_label[technique], per_label[f"{technique}-32bit"]
+        for label, mine, other in (("16-bit", sixteen, thirty_two), ("32-bit float", thirty_two, sixteen)):
+            scored_edges = [r for r in mine.values() if edges_scored(r)]
+            only_here = [s for s, r in mine.items() if meets_floor(r) and not meets_floor(other[s])]
+            lines.append(
+                f"| `{technique}` | {label} | {sum(meets_floor(r) for r in mine.values())} / {len(mine)} | "
+                f"{sum(sum(scored(r).values()) for r in mine.values()) / len(mine):.2e} | "
+                + " / ".join(f"{100 * max(r[k] for r in mine.values()):.3f} %" for k in RATES)
+                + f" | {sum(r['mae'] for r in mine.values()) / len(mine):.5f} | "
+                + " / ".join(f"{sum(r['edges'][d]['mean'] for r in scored_edges) / len(scored_edges):.3f}"
+                             for d in ("trueToRendered", "renderedToTrue"))
+                + f" | {', '.join(only_here) or 'none'} | "
+                f"{max(map_mib(r) for r in mine.values() if r['shadowMaps'] > 0):.0f} MiB |")
+    out.append("\n".join(lines) + "\n")
+
+
 def reference_sections():
     """The header, the references' reproductions, the filtered families and the content scenes' sweeps."""
     out.append("# Results: speed versus accuracy\n")
@@ -185,29 +247,7 @@ def reference_sections():
     out.append(f"Circular-8 closed form and SIMD form agree with the general regression: MAE {circ['mae']:.4f} and "
                f"{circ4['mae']:.4f}.\n")
 
-    # Filtered families.
-    out.append("## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out\n")
-    out.append("| scene | configuration | acne | leak | MAE | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 | lighting ms "
-               "| memory | full-kernel pixels |")
-    out.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    for r in filtered["results"]:
-        full = f"{100 * r['fullKernelFraction']:.1f} %" if r["fullKernelFraction"] >= 0 else "—"
-        out.append(f"| {r['scene']} | {r['label']} | {100 * r['acneRate']:.2f} % | {100 * r['leakRate']:.2f} % | "
-                   f"{r['mae']:.4f} | {edges(r)} | {r['lightingPassMs']['median']:.2f} | {r['shadowBytes'] / 2**20:.1f} MiB | "
-                   f"{full} |")
-    out.append("")
-    for scene in sorted({r["scene"] for r in filtered["results"]}):
-        full32, early32 = by_label(filtered, "jittered32-full", scene), by_label(filtered, "jittered32-early8", scene)
-        full64, early64 = by_label(filtered, "jittered64-full", scene), by_label(filtered, "jittered64-early16", scene)
-        vsm, msm = by_label(filtered, "vsm-1024-d24", scene), by_label(filtered, "msm-1024-d24", scene)
-        evsm = by_label(filtered, "evsm-1024-d24", scene)
-        out.append(f"- **{scene}**: early-out speed-up {full32['lightingPassMs']['median'] / early32['lightingPassMs']['median']:.2f}x "
-                   f"(32 taps, 8 test) and {full64['lightingPassMs']['median'] / early64['lightingPassMs']['median']:.2f}x "
-                   f"(64 taps, 16 test) on the lighting pass (the soft shadows reference measured 1.5x and 3.0x on its "
-                   f"scenes); MAE cost {early32['mae'] - full32['mae']:+.4f} / {early64['mae'] - full64['mae']:+.4f}; "
-                   f"{100 * early32['fullKernelFraction']:.1f} % of pixels took the full kernel. Light leaking: VSM "
-                   f"{100 * vsm['leakRate']:.2f} %, EVSM {100 * evsm['leakRate']:.2f} %, MSM {100 * msm['leakRate']:.2f} %.")
-    out.append("")
+    filtered_section(filtered, load_views("moments16"))
 
     # Knob sweep.
     out.append("## Default scene (knob): techniques x taps x map sizes\n")
@@ -1304,6 +1344,11 @@ if partial == "still":
     still = load_still()
     still_section(still)
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, still["renderer"], partial))
+    sys.exit(0)
+if partial == "filtered":
+    filtered = load("filtered")
+    filtered_section(filtered, load_views("moments16"))
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, filtered["renderer"], partial))
     sys.exit(0)
 if partial == "cost":
     costs = load("cost-model")

@@ -75,6 +75,8 @@ void addOptionDefines(const ShadowSettings& settings, ShadowPlan& plan) {
 
 std::size_t bytesPerTexel(GLenum format) {
     switch (format) {
+    case GL_RG16:
+        return 4;
     case GL_RG32F:
     case GL_RGBA16:
         return 8;

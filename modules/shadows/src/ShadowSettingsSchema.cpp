@@ -59,6 +59,9 @@ bool comparesInHardware(const S& s) {
 bool storesFourMoments(const S& s) {
     return shadows::storesFourMoments(s.technique);
 }
+bool storesMomentsIn16Bits(const S& s) {
+    return s.technique == T::Vsm || s.technique == T::Msm;
+}
 bool filtersMoments(const S& s) {
     return traitsOf(s.technique).moments.format != nullptr;
 }
@@ -189,9 +192,10 @@ const std::vector<SettingRow>& rows() {
         {"msmMomentBias", "", "moment bias",
          "Bias of the moments towards (0, 0.63, 0, 0.63); more hides numerical trouble, leaks more light.",
          FloatSetting{&S::msmMomentBias, {.max = 0.5f}, 0.0f, 0.05f, "%.2e", true}, storesFourMoments},
-        {"msmQuantize16", "", "16-bit moments",
-         "Store the moments in 16-bit unorm through the optimised basis (64 bits per texel).",
-         BoolSetting{&S::msmQuantize16}, only<T::Msm>},
+        {"moments16", "", "16-bit moments",
+         "Store the moments in 16-bit unorm: vsm's in RG16 (32 bits per texel), msm's in RGBA16 through the "
+         "optimised basis (64 bits per texel); off: 32-bit floats.",
+         BoolSetting{&S::moments16}, storesMomentsIn16Bits},
         {"lightSizeScale", "", "light size scale",
          "Every light's size (a sun's angular diameter, a local light's radius) times this, for the soft "
          "techniques: 0 casts hard shadows, 2 penumbrae twice as wide. The ray-traced truth takes the "

@@ -48,7 +48,7 @@ glm::vec2 evsmExponents(const ShadowSettings& settings) {
     return {settings.evsmPositiveExponent, settings.evsmNegativeExponent};
 }
 
-// msm's four moments: 32-bit float, or 16-bit through the optimised basis.
+// msm's four moments: 16-bit through the optimised basis, or 32-bit float.
 constexpr MomentStore kMsmMoments{
     "GS_SHADOW_STORE_MOMENTS4",
     [](const ShadowSettings& s) -> GLenum { return quantisesMoments(s) ? GL_RGBA16 : GL_RGBA32F; },
@@ -182,20 +182,22 @@ const std::array<ShadowTechniqueTraits, kTechniqueCount> kTable{{
      .biasesDepth = true},
     {.technique = T::Vsm,
      .name = "vsm",
-     .summary = "moments (z, z²) in RG32F, separable box blur (`momentBlurRadius`), bilinear lookup, "
-                "Chebyshev bound with `vsmMinimumVariance`, `lightBleedingReduction` and the early "
-                "return where the mean is beyond the receiver",
+     .summary =
+         "moments (z, z²) in RG16 (`moments16`) or RG32F, separable box blur (`momentBlurRadius`), "
+         "bilinear lookup, Chebyshev bound with `vsmMinimumVariance`, `lightBleedingReduction` and the "
+         "early return where the mean is beyond the receiver",
      .reference = "advanced shadow mapping reference, \"Variance Shadow Maps\"",
      .sampler = Sampler::Moments,
      .defines = {"GS_SHADOW_VSM"},
-     .moments = {"GS_SHADOW_STORE_MOMENTS2", [](const ShadowSettings&) -> GLenum { return GL_RG32F; },
+     .moments = {"GS_SHADOW_STORE_MOMENTS2",
+                 [](const ShadowSettings& s) -> GLenum { return s.moments16 ? GL_RG16 : GL_RG32F; },
                  [](const ShadowSettings&) { return glm::vec4(1.0f); }},
      .footprintTexels = nearestReach,
      .chebyshevBound = true},
     {.technique = T::Msm,
      .name = "msm",
      .summary = "4 moments, Hamburger bound via Cholesky with `msmMomentBias` towards (0, 0.63, 0, 0.63); "
-                "RGBA32F, or RGBA16 through the optimised moment basis (`msmQuantize16`, 64 bits per texel)",
+                "RGBA16 through the optimised moment basis (`moments16`, 64 bits per texel), or RGBA32F",
      .reference = "same, \"Moment Shadow Maps\"; Peters & Klein 2015",
      .sampler = Sampler::Moments,
      .defines = {"GS_SHADOW_MSM"},
@@ -320,7 +322,7 @@ float softReachTexels(const ShadowSettings& settings) {
 
 bool quantisesMoments(const ShadowSettings& settings) {
     return settings.technique == ShadowTechnique::MsmSoft ||
-           (settings.technique == ShadowTechnique::Msm && settings.msmQuantize16);
+           (settings.technique == ShadowTechnique::Msm && settings.moments16);
 }
 
 float momentSoftReachTexels(const ShadowSettings& settings) {

@@ -184,8 +184,10 @@ struct ShadowSettings {
     /// Bias of the moments towards (0, 0.63, 0, 0.63) (Msm). The reference's blog uses 9e-3, which hides more
     /// numerical trouble at the cost of light leaking.
     float msmMomentBias = 3e-5f;
-    /// Stores moments as 16-bit unorm via the optimised basis (Msm).
-    bool msmQuantize16 = false;
+    /// Stores the moments in 16-bit unorm (Vsm: z and z² in RG16; Msm: RGBA16 through the optimised basis):
+    /// on the Defaults views as accurate as 32-bit floats at half the memory (docs/RESULTS.md, "Filtered
+    /// families").
+    bool moments16 = true;
     /// Every light's size (LightComponent::angularDiameter, radius) times this, for the soft techniques
     /// (Pcss, PcssScreenPlane, MsmSoft): 0 casts hard shadows. A sun's angular diameter stays below 90°.
     float lightSizeScale = 1.0f;

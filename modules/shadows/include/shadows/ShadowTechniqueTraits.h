@@ -152,7 +152,7 @@ constexpr bool storesFourMoments(ShadowTechnique technique) {
     return technique == ShadowTechnique::Msm || technique == ShadowTechnique::MsmSoft;
 }
 
-/// @brief Whether the four moments are stored in the 16-bit optimised basis: msm's where msmQuantize16 asks,
+/// @brief Whether the four moments are stored in the 16-bit optimised basis: msm's where moments16 asks,
 /// msm-soft's always (its figures equal the 32-bit ones on the soft scenes, at half the memory of a mip chain
 /// a third larger).
 bool quantisesMoments(const ShadowSettings& settings);
