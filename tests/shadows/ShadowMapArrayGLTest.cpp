@@ -44,7 +44,7 @@ TEST(ShadowMapArrayGLTest, StoredGradientsAddAnRgTarget) {
     EXPECT_EQ(target.bytes(plan), 64u * 64u * (4u + 8u));
 }
 
-TEST(ShadowMapArrayGLTest, MomentsHaveOneLevelInThePlansFormatAndAreSampled) {
+TEST(ShadowMapArrayGLTest, MomentsHaveOneLevelInThePlansFormatOverOneSharedDepthLayer) {
     glTestContext();
     ShadowSettings settings;
     settings.technique = ShadowTechnique::Msm;
@@ -58,8 +58,11 @@ TEST(ShadowMapArrayGLTest, MomentsHaveOneLevelInThePlansFormatAndAreSampled) {
     // No mip chain: the lookups read the first level only (receiver.glsl, gsShadowMoments).
     EXPECT_EQ(textureLevelParameter(target.moments->id(), 0, GL_TEXTURE_WIDTH), 64);
     EXPECT_EQ(textureLevelParameter(target.moments->id(), 1, GL_TEXTURE_WIDTH), 0);
-    // Per layer the depth and the moments; one temporary layer for the blur.
-    EXPECT_EQ(target.bytes(plan), 2u * (64u * 64u * 4u + 64u * 64u * 8u) + 64u * 64u * 8u);
+    // The moments per layer, over one depth layer both maps draw their casters against in turn; one temporary
+    // layer for the blur.
+    EXPECT_EQ(target.layers(), 2);
+    EXPECT_EQ(textureLevelParameter(target.depth.id(), 0, GL_TEXTURE_DEPTH), 1);
+    EXPECT_EQ(target.bytes(plan), 64u * 64u * 4u + 2u * 64u * 64u * 8u + 64u * 64u * 8u);
 }
 
 TEST(ShadowMapArrayGLTest, UnblurredMomentsHaveNoBlurTemporary) {

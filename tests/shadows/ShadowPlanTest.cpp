@@ -233,10 +233,19 @@ TEST(ShadowPlanTest, MapBytesCountEveryTargetTheTechniqueStores) {
     // EVSM's RGBA32F moments: the 80 MiB a 2048² map holds.
     EXPECT_EQ(ShadowPlan::resolve(ShadowSettings{.technique = ShadowTechnique::Evsm}).mapBytes(2048, 1),
               80u << 20);
-    // A blur adds its one temporary layer of moments, however many maps there are.
+    // Whole maps of a moment technique share one depth layer, and a blur adds its one temporary layer of
+    // moments, however many maps there are.
     ShadowSettings blurred{.technique = ShadowTechnique::Evsm};
     blurred.momentBlurRadius = 2;
+    ASSERT_TRUE(ShadowPlan::resolve(blurred).sharesDepthLayer);
+    EXPECT_EQ(ShadowPlan::resolve(blurred).mapBytes(2048, 2), (16u << 20) + 2u * (64u << 20) + (64u << 20));
+    // A virtual atlas keeps a depth layer per layer.
+    blurred.mapAllocation = MapAllocation::Virtual;
+    ASSERT_FALSE(ShadowPlan::resolve(blurred).sharesDepthLayer);
     EXPECT_EQ(ShadowPlan::resolve(blurred).mapBytes(2048, 2), 2u * (80u << 20) + (64u << 20));
+    // Depth-only and gradient maps sample their depth: a layer each.
+    EXPECT_FALSE(ShadowPlan::resolve(ShadowSettings{}).sharesDepthLayer);
+    EXPECT_FALSE(ShadowPlan::resolve(stored).sharesDepthLayer);
     // msm-soft's mip chain: 7 levels of RGBA16 moments.
     std::size_t mipTexels = 0;
     for (std::size_t side = 2048; side >= 32; side /= 2) {
@@ -276,9 +285,10 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(
         // Eight point lights' 48 faces in 16 MiB each: 768 MiB, within the default budget.
         BudgetCase{"depth_48_faces_fit", ShadowTechnique::SlopeScaledBias, 48, 1024, 2048},
-        // The same under EVSM, 80 MiB each (3.75 GiB): 1024² (960 MiB).
+        // The same under EVSM, 64 MiB of moments each beside their one shared depth layer (3.02 GiB): 1024²
+        // (772 MiB).
         BudgetCase{"evsm_48_faces_halved", ShadowTechnique::Evsm, 48, 1024, 1024},
-        // The room's two point lights under EVSM: 960 MiB, which fits.
+        // The room's two point lights under EVSM: 784 MiB, which fits.
         BudgetCase{"evsm_12_faces_fit", ShadowTechnique::Evsm, 12, 1024, 2048},
         BudgetCase{"evsm_12_faces_in_100_MiB", ShadowTechnique::Evsm, 12, 100, 512},
         // The smallest budget holds 48 EVSM maps of 64².

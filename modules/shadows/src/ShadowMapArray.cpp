@@ -23,7 +23,7 @@ void checkAllocated(const engine::gl::Framebuffer& framebuffer, int resolution, 
 } // namespace
 
 ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& plan)
-    : depth(plan.depthFormat, glm::ivec2(resolution), layers) {
+    : depth(plan.depthFormat, glm::ivec2(resolution), plan.sharesDepthLayer ? 1 : layers) {
     const glm::ivec2 size(resolution);
     if (plan.storesGradient) {
         gradient.emplace(GL_RG32F, size, layers);
@@ -43,7 +43,7 @@ ShadowMapArray::ShadowMapArray(int resolution, int layers, const ShadowPlan& pla
     framebuffers.reserve(static_cast<std::size_t>(layers));
     for (int layer = 0; layer < layers; ++layer) {
         engine::gl::Framebuffer& framebuffer = framebuffers.emplace_back("shadow map");
-        framebuffer.attach(GL_DEPTH_ATTACHMENT, depth, layer);
+        framebuffer.attach(GL_DEPTH_ATTACHMENT, depth, plan.sharesDepthLayer ? 0 : layer);
         if (gradient || moments) {
             framebuffer.attach(GL_COLOR_ATTACHMENT0, gradient ? *gradient : *moments, layer);
             framebuffer.setDrawBuffers({GL_COLOR_ATTACHMENT0});

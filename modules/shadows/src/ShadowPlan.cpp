@@ -124,6 +124,7 @@ ShadowPlan ShadowPlan::resolve(const ShadowSettings& settings) {
         plan.momentBytesPerTexel = bytesPerTexel(plan.momentsFormat);
         plan.momentsClear = moments.farPlane(settings);
         plan.depthDefines.push_back(moments.define);
+        plan.sharesDepthLayer = settings.mapAllocation == MapAllocation::Fitted;
     }
     if (plan.traits->shaderParameters) {
         plan.shaderParameters = plan.traits->shaderParameters(settings);
@@ -165,18 +166,23 @@ int ShadowPlan::momentLevelsAt(int resolution) const {
 std::size_t ShadowPlan::mapBytes(int resolution, int layers) const {
     const auto side = static_cast<std::size_t>(std::max(resolution, 0));
     const std::size_t texels = side * side;
-    std::size_t layer = texels * (depthBytesPerTexel + (storesGradient ? 8 : 0));
-    std::size_t total = 0;
-    if (!storesGradient && momentsFormat != 0) {
+    const auto count = static_cast<std::size_t>(std::max(layers, 0));
+    std::size_t total =
+        (sharesDepthLayer ? std::min<std::size_t>(count, 1) : count) * texels * depthBytesPerTexel;
+    if (storesGradient) {
+        total += count * texels * 8;
+    } else if (momentsFormat != 0) {
+        std::size_t chain = 0;
         for (int level = 0; level < momentLevelsAt(resolution); ++level) {
             const std::size_t levelSide = side >> level;
-            layer += levelSide * levelSide * momentBytesPerTexel;
+            chain += levelSide * levelSide * momentBytesPerTexel;
         }
+        total += count * chain;
         if (blursMoments) {
             total += texels * momentBytesPerTexel; // the blur's one temporary layer
         }
     }
-    return total + static_cast<std::size_t>(std::max(layers, 0)) * layer;
+    return total;
 }
 
 int budgetedResolution(const ShadowPlan& plan, int resolution, int layers, std::size_t budgetBytes) {

@@ -24,9 +24,9 @@ struct ShadowPlan {
     /// @brief Mip levels of the moments of a map of `resolution`²: momentLevels, no more than the size
     /// allows.
     [[nodiscard]] int momentLevelsAt(int resolution) const;
-    /// @brief GPU memory of `layers` whole maps of `resolution`² in these formats, bytes: the depth, the
-    /// gradient or the moments (every mip level), and the moments blur's one temporary layer
-    /// (ShadowStats::bytes).
+    /// @brief GPU memory of `layers` whole maps of `resolution`² in these formats, bytes: the depth (one
+    /// layer where the maps share it), the gradient or the moments (every mip level), and the moments blur's
+    /// one temporary layer (ShadowStats::bytes).
     [[nodiscard]] std::size_t mapBytes(int resolution, int layers) const;
 
     /// The technique's row of the technique table.
@@ -60,6 +60,10 @@ struct ShadowPlan {
     int momentLevels = 1;
     /// Bytes of one moments texel.
     std::size_t momentBytesPerTexel = 0;
+    /// Whole (fitted) maps of a moment technique share one depth layer: the lookups read only the moments, so
+    /// the depth is the shadow pass's z-buffer, cleared before each map's casters are drawn in turn. A
+    /// virtual atlas keeps a depth layer per pool layer, as its page budget counts them.
+    bool sharesDepthLayer = false;
     /// What empty moments texels hold: the far plane's moments in the stored basis.
     glm::vec4 momentsClear{1.0f};
 
