@@ -21,8 +21,7 @@ public:
 /// @brief The render targets of every shadow map of a frame, one layer each (a light's map, a cascade, a cube
 /// face), in the formats the plan names: the depth (one layer all share where ShadowPlan::sharesDepthLayer),
 /// and the gradient or the filtered moments (with the blur's one temporary layer) where the technique stores
-/// them. Layers let the lighting pass pick a cascade or a
-/// cube face per fragment.
+/// them. Layers let the lighting pass pick a cascade or a cube face per fragment.
 struct ShadowMapArray {
     /// @throws MapAllocationError where the driver cannot allocate them.
     ShadowMapArray(int resolution, int layers, const ShadowPlan& plan);
