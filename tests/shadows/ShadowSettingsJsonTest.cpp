@@ -66,6 +66,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadJsonCase{"malformed", R"({"technique": )", "not valid JSON"},
         BadJsonCase{"notAnObject", "[1, 2]", "expected a JSON object"},
         BadJsonCase{"unknownField", R"({"techniqe": "gsm"})", "unknown field 'techniqe'"},
+        BadJsonCase{"renamedField", R"({"msmQuantize16": true})",
+                    "unknown field 'msmQuantize16' (now 'moments16')"},
         BadJsonCase{"unknownTechnique", R"({"technique": "shadow-volumes"})", "field 'technique'"},
         BadJsonCase{"wrongType", R"({"resolution": "big"})", "field 'resolution'"},
         BadJsonCase{"fractionalInteger", R"({"pcfTaps": 4.5})", "field 'pcfTaps'"},

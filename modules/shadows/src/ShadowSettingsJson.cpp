@@ -113,6 +113,12 @@ Field fieldOf(const SettingRow& row) {
     return enumField(std::get<EnumSetting>(row.field));
 }
 
+/// Fields a release renamed: a file that still names one is refused, saying what it is called now.
+const std::map<std::string, std::string_view>& renamedFields() {
+    static const std::map<std::string, std::string_view> table{{"msmQuantize16", "moments16"}};
+    return table;
+}
+
 const std::map<std::string, Field>& fields() {
     static const std::map<std::string, Field> table = [] {
         std::map<std::string, Field> byName;
@@ -149,7 +155,11 @@ ShadowSettings settingsFromJson(std::string_view text, const std::string& source
     for (const auto& [name, value] : document.items()) {
         const auto field = fields().find(name);
         if (field == fields().end()) {
-            throw SettingsError(source + ": unknown field '" + name + "'");
+            const auto renamed = renamedFields().find(name);
+            throw SettingsError(source + ": unknown field '" + name + "'" +
+                                (renamed != renamedFields().end()
+                                     ? " (now '" + std::string(renamed->second) + "')"
+                                     : std::string()));
         }
         try {
             field->second.read(settings, value);
