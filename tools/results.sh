@@ -1,20 +1,21 @@
 #!/usr/bin/env bash
 # Regenerates docs/RESULTS.md (and docs/results/*.png) from a fresh shadowbench sweep on this machine.
-# Usage: bash tools/results.sh [--only real|defaults|filtered|virtual|soft|cost|sizing|still] [work folder, default
-# out/results]
+# Usage: bash tools/results.sh [--only real|defaults|filtered|lights|virtual|soft|cost|sizing|still] [work folder,
+# default out/results]
 # --only real runs steps 4 to 6 alone, --only defaults steps 4 to 7 (the recommendation weighs the real models' frame
-# times), --only filtered step 3, --only virtual step 11 (with the osgShadow peer's VDSM rows it reads), --only soft
-# step 12, --only cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows), and replaces only
-# those steps' sections of docs/RESULTS.md ("Real models"; those and "Defaults" and "PCF over GSM against single-tap
-# GSM"; "Filtered families: ..."; "Virtual maps", "Soft shadows", "Cost model", "Maps sized to the view", "A still
-# view keeps its maps"), which then say so.
+# times), --only filtered step 3, --only lights step 8, --only virtual step 11 (with the osgShadow peer's VDSM rows it
+# reads), --only soft step 12, --only cost step 10, --only sizing step 13, --only still step 14 (with its VDSM rows),
+# and replaces only those steps' sections of docs/RESULTS.md ("Real models"; those and "Defaults" and "PCF over GSM
+# against single-tap GSM"; "Filtered families: ..."; "Every light: cascades and point lights"; "Virtual maps", "Soft
+# shadows", "Cost model", "Maps sized to the view", "A still view keeps its maps"), which then say so.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 only=()
 if [ "${1:-}" = --only ]; then
     case "${2:-}" in
-        real | defaults | filtered | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
-        *) echo "results.sh: --only takes 'real', 'defaults', 'filtered', 'virtual', 'soft', 'cost', 'sizing' or 'still'" >&2
+        real | defaults | filtered | lights | virtual | soft | cost | sizing | still) only=(--only "$2") ;;
+        *) echo "results.sh: --only takes 'real', 'defaults', 'filtered', 'lights', 'virtual', 'soft', 'cost', 'sizing'" \
+               "or 'still'" >&2
            exit 2 ;;
     esac
     shift 2
@@ -160,26 +161,6 @@ real_models_steps
 #    table).
 defaults_views "$work/defaults"
 
-# 8. Every light. The 4 km outdoor scene under its sun: the default technique with 1-4 cascades and several
-#    split weights, timed, against the truth, and its shimmer while the view the maps are fitted to moves by
-#    sub-texel steps, snapped and not; osgShadow's cascaded techniques on the same view in the same table. Then
-#    every technique at its defaults on the outdoor scene (automatic cascades) and in the point-light room.
-outdoor=content/scenes/outdoor.gltf
-peer_as "$outdoor" vdsm --technique vdsm
-peer_as "$outdoor" vdsm-csm2 --technique vdsm --cascades 2
-for splits in 1 2 3 4; do
-    peer_as "$outdoor" "pssm$splits" --technique pssm --splits "$splits"
-done
-cascades=(--config "c1:cascadeCount=1" --config "c1-unsnapped:cascadeCount=1,texelSnapping=false")
-for count in 2 3 4; do
-    for weight in 0.5 0.75 0.9 0.97; do
-        cascades+=(--config "c$count-w$weight:cascadeCount=$count,cascadeSplitWeight=$weight")
-    done
-done
-cascades+=(--config "c4-w0.9-unsnapped:cascadeCount=4,cascadeSplitWeight=0.9,texelSnapping=false")
-"$bench" --scene outdoor --techniques default --resolutions 2048 --frames 5 --shimmer 8 "${cascades[@]}" \
-    --peer "$work/osg" --out "$work/outdoor-cascades"
-"$bench" --defaults --scene outdoor --scene room --frames 5 --out "$work/every-light"
 
 # 9. Fitted to what the screen sees: the maps fitted to the visible depth samples (the default) against mesh bounds,
 #    timed at 640x480 with 2048² maps, on the large views and two models; then shimmer along a camera path (the
@@ -205,6 +186,29 @@ elif [ "${only[1]}" = virtual ]; then
     for model in suzanne fzk-haus cylinder-engine terrain; do
         peer "corpus/$model.glb" vdsm
     done
+fi
+
+if [ "${only[1]:-lights}" = lights ]; then
+# 8. Every light. The 4 km outdoor scene under its sun: the default technique with 1-4 cascades and several
+#    split weights, timed, against the truth, and its shimmer while the view the maps are fitted to moves by
+#    sub-texel steps, snapped and not; osgShadow's cascaded techniques on the same view in the same table. Then
+#    every technique at its defaults on the outdoor scene (automatic cascades) and in the point-light room.
+outdoor=content/scenes/outdoor.gltf
+peer_as "$outdoor" vdsm --technique vdsm
+peer_as "$outdoor" vdsm-csm2 --technique vdsm --cascades 2
+for splits in 1 2 3 4; do
+    peer_as "$outdoor" "pssm$splits" --technique pssm --splits "$splits"
+done
+cascades=(--config "c1:cascadeCount=1" --config "c1-unsnapped:cascadeCount=1,texelSnapping=false")
+for count in 2 3 4; do
+    for weight in 0.5 0.75 0.9 0.97; do
+        cascades+=(--config "c$count-w$weight:cascadeCount=$count,cascadeSplitWeight=$weight")
+    done
+done
+cascades+=(--config "c4-w0.9-unsnapped:cascadeCount=4,cascadeSplitWeight=0.9,texelSnapping=false")
+"$bench" --scene outdoor --techniques default --resolutions 2048 --frames 5 --shimmer 8 "${cascades[@]}" \
+    --peer "$work/osg" --out "$work/outdoor-cascades"
+"$bench" --defaults --scene outdoor --scene room --frames 5 --out "$work/every-light"
 fi
 
 if [ "${only[1]:-filtered}" = filtered ]; then

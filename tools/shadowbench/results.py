@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Writes docs/RESULTS.md and its plots from the results.json files of tools/results.sh's shadowbench runs.
 
-usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only real|defaults|filtered|virtual|soft|cost|sizing|still]
+usage: results.py WORK_FOLDER RESULTS_MD PLOT_FOLDER [--only real|defaults|filtered|lights|virtual|soft|cost|sizing|
+still]
 
-With --only real (filtered, virtual, soft, cost, sizing, still), only steps 4-6's (3's, 11's, 12's, 10's, 13's,
-14's) section, "Real models" ("Filtered families: ...", "Virtual maps", "Soft shadows", "Cost model", "Maps sized to
-the view", "A still view keeps its maps") up to the next "## " section, is regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says
-so; every other section stays as the last full run wrote it. --only defaults regenerates steps 4-7's three: "Real
-models", "Defaults" and "PCF over GSM against single-tap GSM".
+With --only real (filtered, lights, virtual, soft, cost, sizing, still), only steps 4-6's (3's, 8's, 11's, 12's,
+10's, 13's, 14's) section, "Real models" ("Filtered families: ...", "Every light: ...", "Virtual maps", "Soft
+shadows", "Cost model", "Maps sized to the view", "A still view keeps its maps") up to the next "## " section, is
+regenerated from WORK_FOLDER and replaces its own in RESULTS_MD, which says so; every other section stays as the last
+full run wrote it. --only defaults regenerates steps 4-7's three: "Real models", "Defaults" and "PCF over GSM
+against single-tap GSM".
 """
 import itertools
 import json
@@ -28,6 +30,7 @@ from peer_rounds import bracketed, median_ratio  # noqa: E402
 # The sections --only regenerates alone, by its option.
 PARTIAL_SECTIONS = {"real": "## Real models", "defaults": "## Defaults", "virtual": "## Virtual maps",
                     "filtered": "## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out",
+                    "lights": "## Every light: cascades and point lights",
                     "soft": "## Soft shadows", "cost": "## Cost model",
                     "sizing": "## Maps sized to the view", "still": "## A still view keeps its maps"}
 
@@ -1349,6 +1352,11 @@ if partial == "filtered":
     filtered = load("filtered")
     filtered_section(filtered, load_views("moments16"))
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, filtered["renderer"], partial))
+    sys.exit(0)
+if partial == "lights":
+    cascades = load("outdoor-cascades")
+    every_light_section(cascades, load("every-light"))
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, cascades["renderer"], partial))
     sys.exit(0)
 if partial == "cost":
     costs = load("cost-model")
