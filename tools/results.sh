@@ -225,8 +225,11 @@ if [ "${only[1]:-filtered}" = filtered ]; then
     --out "$work/filtered"
 #    The moments' precision over the Defaults views: vsm and msm at their defaults (16-bit moments) and in 32-bit
 #    floats, accuracy only.
-defaults_views "$work/moments16" --techniques vsm,msm --config "vsm-32bit:technique=vsm,moments16=false" \
-    --config "msm-32bit:technique=msm,moments16=false"
+moments32=(--config "vsm-32bit:technique=vsm,moments16=false" --config "msm-32bit:technique=msm,moments16=false")
+defaults_views "$work/moments16" --techniques vsm,msm "${moments32[@]}"
+#    and on the 4 km outdoor scene's cascades and the room's cube faces, 640x480.
+"$bench" --defaults --accuracy-only --scene outdoor --scene room --techniques vsm,msm "${moments32[@]}" \
+    --out "$work/moments16-lights"
 fi
 
 if [ "${only[1]:-cost}" = cost ]; then

@@ -130,7 +130,7 @@ def by_label(doc, label, scene="knob"):
 out = []
 
 
-def filtered_section(filtered, moments16):
+def filtered_section(filtered, moments16, moments16_lights):
     """The filtered families on three scenes, then the moments' precision over the Defaults views."""
     out.append("## Filtered families: VSM, EVSM, MSM and jittered PCF with early-out\n")
     out.append("| scene | configuration | acne | leak | MAE | edges true→rendered px | edges rendered→true px | m ≤ 1 / m p99 | lighting ms "
@@ -155,10 +155,10 @@ def filtered_section(filtered, moments16):
                    f"{100 * vsm['leakRate']:.2f} %, EVSM {100 * evsm['leakRate']:.2f} %, MSM {100 * msm['leakRate']:.2f} %.")
     out.append("")
 
-    moments_precision(moments16)
+    moments_precision(moments16, moments16_lights)
 
 
-def moments_precision(views):
+def moments_precision(views, lights):
     """vsm and msm with 16-bit moments (the default) against 32-bit floats over the Defaults views: the floor, the
     rates and the memory each precision holds."""
     rows = [r for r in views["results"] if not r["peer"]]
@@ -188,6 +188,21 @@ def moments_precision(views):
                              for d in ("trueToRendered", "renderedToTrue"))
                 + f" | {', '.join(only_here) or 'none'} | "
                 f"{max(map_mib(r) for r in mine.values() if r['shadowMaps'] > 0):.0f} MiB |")
+    out.append("\n".join(lines) + "\n")
+    out.append(f"The same on the 4 km outdoor scene (its sun's automatic cascades) and in the room (two point lights' "
+               f"cube faces), {lights['width']}x{lights['height']}: acne / leak / darkening and edges (mean both ways), "
+               "16-bit against 32-bit float; a long depth range quantises coarser in 16 bits.\n")
+    rows = [r for r in lights["results"] if not r["peer"]]
+    lines = ["| scene | technique | 16-bit: acne / leak / darkening | 16-bit: edges px | 32-bit: acne / leak / darkening "
+             "| 32-bit: edges px |", "| --- | --- | --- | --- | --- | --- |"]
+    for scene in dict.fromkeys(r["scene"] for r in rows):
+        for technique in ("vsm", "msm"):
+            cells = []
+            for label in (technique, f"{technique}-32bit"):
+                r = next(r for r in rows if r["scene"] == scene and r["label"] == label)
+                cells.append(" / ".join(f"{100 * r[k]:.3f}" for k in RATES) + " % | "
+                             f"{r['edges']['trueToRendered']['mean']:.2f} / {r['edges']['renderedToTrue']['mean']:.2f}")
+            lines.append(f"| {scene} | `{technique}` | " + " | ".join(cells) + " |")
     out.append("\n".join(lines) + "\n")
 
 
@@ -250,7 +265,7 @@ def reference_sections():
     out.append(f"Circular-8 closed form and SIMD form agree with the general regression: MAE {circ['mae']:.4f} and "
                f"{circ4['mae']:.4f}.\n")
 
-    filtered_section(filtered, load_views("moments16"))
+    filtered_section(filtered, load_views("moments16"), load("moments16-lights"))
 
     # Knob sweep.
     out.append("## Default scene (knob): techniques x taps x map sizes\n")
@@ -1350,7 +1365,7 @@ if partial == "still":
     sys.exit(0)
 if partial == "filtered":
     filtered = load("filtered")
-    filtered_section(filtered, load_views("moments16"))
+    filtered_section(filtered, load_views("moments16"), load("moments16-lights"))
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, filtered["renderer"], partial))
     sys.exit(0)
 if partial == "lights":

@@ -185,8 +185,8 @@ struct ShadowSettings {
     /// numerical trouble at the cost of light leaking.
     float msmMomentBias = 3e-5f;
     /// Stores the moments in 16-bit unorm (Vsm: z and z² in RG16; Msm: RGBA16 through the optimised basis):
-    /// on the Defaults views as accurate as 32-bit floats at half the memory (docs/RESULTS.md, "Filtered
-    /// families").
+    /// on the Defaults views as accurate as 32-bit floats at half the memory, though a long depth range
+    /// quantises coarser (docs/RESULTS.md, "Filtered families").
     bool moments16 = true;
     /// Every light's size (LightComponent::angularDiameter, radius) times this, for the soft techniques
     /// (Pcss, PcssScreenPlane, MsmSoft): 0 casts hard shadows. A sun's angular diameter stays below 90°.
