@@ -1324,11 +1324,67 @@ def splice(heading, sections, renderer, option):
     return "\n".join(previous[:begin] + fresh + previous[end:]) + "\n"
 
 
-if partial == "real":
+def partial_real():
     real_meta = merge_rounds("real")
-    model_sections = []
     real_models(real_meta, load("scaling"))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, real_meta["renderer"], partial))
+    return real_meta
+
+
+def partial_virtual():
+    timed = merge_rounds("virtual")
+    virtual_section(timed, load("virtual-suns"))
+    virtual_texels_section(load("virtual-texels"))
+    virtual_lights_section(load("virtual-lights"))
+    return timed
+
+
+def partial_soft():
+    soft = load("soft")
+    soft_section(soft, load("soft-coarse"), load("soft-seams"))
+    return soft
+
+
+def partial_sizing():
+    sizing = load("sizing")
+    sizing_section(sizing, load_views("sizing-floor"))
+    return sizing
+
+
+def partial_still():
+    still = load_still()
+    still_section(still)
+    return still
+
+
+def partial_filtered():
+    filtered = load("filtered")
+    filtered_section(filtered, load_views("moments16"), load("moments16-lights"))
+    return filtered
+
+
+def partial_lights():
+    cascades = load("outdoor-cascades")
+    every_light_section(cascades, load("every-light"))
+    return cascades
+
+
+def partial_cost():
+    costs = load("cost-model")
+    nir_path = work / "cost-model" / "nir-counts.json"
+    out.extend(cost_model.section(costs, json.loads(nir_path.read_text()) if nir_path.exists() else None))
+    return costs
+
+
+# Each partial that regenerates its one section: it appends the section to `out` and returns the run whose renderer
+# the section's note names.
+ONE_SECTION_PARTIALS = {"real": partial_real, "virtual": partial_virtual, "soft": partial_soft,
+                        "sizing": partial_sizing, "still": partial_still, "filtered": partial_filtered,
+                        "lights": partial_lights, "cost": partial_cost}
+
+if partial in ONE_SECTION_PARTIALS:
+    model_sections = []
+    run = ONE_SECTION_PARTIALS[partial]()
+    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, run["renderer"], partial))
     sys.exit(0)
 if partial == "defaults":
     # Three sections, each spliced in place of its previous text.
@@ -1340,44 +1396,6 @@ if partial == "defaults":
         out.clear()
         build()
         results_md.write_text(splice(heading, out, real_meta["renderer"], partial))
-    sys.exit(0)
-if partial == "virtual":
-    timed = merge_rounds("virtual")
-    virtual_section(timed, load("virtual-suns"))
-    virtual_texels_section(load("virtual-texels"))
-    virtual_lights_section(load("virtual-lights"))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, timed["renderer"], partial))
-    sys.exit(0)
-if partial == "soft":
-    soft = load("soft")
-    soft_section(soft, load("soft-coarse"), load("soft-seams"))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, soft["renderer"], partial))
-    sys.exit(0)
-if partial == "sizing":
-    sizing = load("sizing")
-    sizing_section(sizing, load_views("sizing-floor"))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, sizing["renderer"], partial))
-    sys.exit(0)
-if partial == "still":
-    still = load_still()
-    still_section(still)
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, still["renderer"], partial))
-    sys.exit(0)
-if partial == "filtered":
-    filtered = load("filtered")
-    filtered_section(filtered, load_views("moments16"), load("moments16-lights"))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, filtered["renderer"], partial))
-    sys.exit(0)
-if partial == "lights":
-    cascades = load("outdoor-cascades")
-    every_light_section(cascades, load("every-light"))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, cascades["renderer"], partial))
-    sys.exit(0)
-if partial == "cost":
-    costs = load("cost-model")
-    nir_path = work / "cost-model" / "nir-counts.json"
-    out.extend(cost_model.section(costs, json.loads(nir_path.read_text()) if nir_path.exists() else None))
-    results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, costs["renderer"], partial))
     sys.exit(0)
 
 reference_sections()
