@@ -94,8 +94,7 @@ TEST(ShadowPlanTest, VsmMomentsAreRG16UnlessMoments16IsOff) {
     plan = ShadowPlan::resolve(settings);
     EXPECT_EQ(plan.momentsFormat, static_cast<GLenum>(GL_RG32F));
     EXPECT_EQ(plan.momentBytesPerTexel, 8u);
-    // Neither evsm (its warps overflow 16-bit floats at the default exponents) nor the depth-only techniques
-    // take the setting.
+    // evsm does not take the setting: its warps overflow 16-bit floats at the default exponents.
     settings.technique = ShadowTechnique::Evsm;
     settings.moments16 = true;
     EXPECT_EQ(ShadowPlan::resolve(settings).momentsFormat, static_cast<GLenum>(GL_RGBA32F));
