@@ -1324,13 +1324,13 @@ def splice(heading, sections, renderer, option):
     return "\n".join(previous[:begin] + fresh + previous[end:]) + "\n"
 
 
-def partial_real():
+def build_real():
     real_meta = merge_rounds("real")
     real_models(real_meta, load("scaling"))
     return real_meta
 
 
-def partial_virtual():
+def build_virtual():
     timed = merge_rounds("virtual")
     virtual_section(timed, load("virtual-suns"))
     virtual_texels_section(load("virtual-texels"))
@@ -1338,52 +1338,51 @@ def partial_virtual():
     return timed
 
 
-def partial_soft():
+def build_soft():
     soft = load("soft")
     soft_section(soft, load("soft-coarse"), load("soft-seams"))
     return soft
 
 
-def partial_sizing():
+def build_sizing():
     sizing = load("sizing")
     sizing_section(sizing, load_views("sizing-floor"))
     return sizing
 
 
-def partial_still():
+def build_still():
     still = load_still()
     still_section(still)
     return still
 
 
-def partial_filtered():
+def build_filtered():
     filtered = load("filtered")
     filtered_section(filtered, load_views("moments16"), load("moments16-lights"))
     return filtered
 
 
-def partial_lights():
+def build_lights():
     cascades = load("outdoor-cascades")
     every_light_section(cascades, load("every-light"))
     return cascades
 
 
-def partial_cost():
+def build_cost():
     costs = load("cost-model")
     nir_path = work / "cost-model" / "nir-counts.json"
     out.extend(cost_model.section(costs, json.loads(nir_path.read_text()) if nir_path.exists() else None))
     return costs
 
 
-# Each partial that regenerates its one section: it appends the section to `out` and returns the run whose renderer
-# the section's note names.
-ONE_SECTION_PARTIALS = {"real": partial_real, "virtual": partial_virtual, "soft": partial_soft,
-                        "sizing": partial_sizing, "still": partial_still, "filtered": partial_filtered,
-                        "lights": partial_lights, "cost": partial_cost}
+# The builders of the sections --only regenerates one at a time, which the full run calls too: each appends its
+# section to `out` and returns the run whose renderer a regenerated section's note names.
+ONE_SECTION_BUILDS = {"real": build_real, "virtual": build_virtual, "soft": build_soft, "sizing": build_sizing,
+                      "still": build_still, "filtered": build_filtered, "lights": build_lights, "cost": build_cost}
 
-if partial in ONE_SECTION_PARTIALS:
+if partial in ONE_SECTION_BUILDS:
     model_sections = []
-    run = ONE_SECTION_PARTIALS[partial]()
+    run = ONE_SECTION_BUILDS[partial]()
     results_md.write_text(splice(PARTIAL_SECTIONS[partial], out, run["renderer"], partial))
     sys.exit(0)
 if partial == "defaults":
@@ -1404,7 +1403,7 @@ real_meta = merge_rounds("real")
 defaults_section(load_views("defaults"), real_meta)
 pcf_over_gsm_section(corpus_views())
 real_models(real_meta, load("scaling"))
-every_light_section(load("outdoor-cascades"), load("every-light"))
+build_lights()
 fit_section(load("fit"))
 path_shimmer_section(load("path-shimmer"))
 if any((work / "virtual").glob("*/1/results.json")):
@@ -1413,13 +1412,12 @@ if any((work / "virtual").glob("*/1/results.json")):
     if (work / "virtual-lights" / "results.json").exists():
         virtual_lights_section(load("virtual-lights"))
 if (work / "soft" / "results.json").exists():
-    soft_section(load("soft"), load("soft-coarse"), load("soft-seams"))
+    build_soft()
 if (work / "sizing" / "results.json").exists():
-    sizing_section(load("sizing"), load_views("sizing-floor"))
+    build_sizing()
 if any((work / "still").glob("*/1/results.json")):
-    still_section(load_still())
+    build_still()
 if (work / "cost-model" / "results.json").exists():
-    nir_path = work / "cost-model" / "nir-counts.json"
-    out.extend(cost_model.section(load("cost-model"), json.loads(nir_path.read_text()) if nir_path.exists() else None))
+    build_cost()
 
 results_md.write_text("\n".join(out) + "\n")
