@@ -1,6 +1,7 @@
 // Cascaded shadow maps on a long view over open ground: every technique at its defaults with 1-4 cascades
-// against the closed-form shadows of boxes, and the shimmer of a moving fit seen by a still observer.
-// Thresholds are the values measured on Mesa llvmpipe (deterministic, printed as "[ measured ]") with margin.
+// against the closed-form shadows of boxes, the shimmer of a moving fit seen by a still observer, and the
+// blend band between cascades as the shading and the visibility view both show it. Thresholds are the values
+// measured on Mesa llvmpipe (deterministic, printed as "[ measured ]") with margin.
 #include "ShadowMeasurement.h"
 
 #include "../support/TestScenes.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <optional>
 
 using namespace shadows;
 
@@ -300,6 +302,73 @@ TEST(CascadedShadowsGLTest, StableCascadesDoNotShimmerWhileTheCameraMovesBySubTe
             EXPECT_GT(changed, 50u);
         }
     }
+}
+
+namespace {
+
+/// Every pixel's colour in linear RGBA, shaded with the module at `settings`, or without it.
+std::vector<float> shadedLinear(const engine::Scene& scene, engine::EntityId camera,
+                                const std::optional<ShadowSettings>& settings, glm::ivec2 size) {
+    engine::Engine engine;
+    if (settings) {
+        engine.addModule(std::make_unique<ShadowModule>(*settings));
+    }
+    engine::RenderTarget target(size, engine::ColorFormat::Rgba32F);
+    engine.renderer().environment.background = glm::vec3(0.0f);
+    engine.renderFrame(scene, camera, target);
+    return target.readPixelsFloat();
+}
+
+} // namespace
+
+TEST(CascadedShadowsGLTest, TheBlendBandFadesIntoTheNextCascadeAsTheVisibilityViewShows) {
+    // Coarse maps, so two cascades disagree along edges, and a band half a cascade wide.
+    engine::EntityId camera = engine::kNoEntity;
+    engine::Scene scene = openGround(camera);
+    const glm::ivec2 size(320, 180);
+    ShadowSettings settings;
+    settings.cascadeCount = 2;
+    settings.resolution = 256;
+    settings.cascadeBlend = 0.5f;
+    ShadowSettings sharp = settings;
+    sharp.cascadeBlend = 0.0f;
+    const ShadowMeasurement blended = ShadowMeasurement::render(scene, camera, settings, size);
+    const ShadowMeasurement unblended = ShadowMeasurement::render(scene, camera, sharp, size);
+    ASSERT_EQ(blended.projections.size(), 2u);
+    std::size_t mixed = 0;
+    for (std::size_t i = 0; i < blended.visibility.size(); ++i) {
+        mixed += std::abs(blended.visibility[i] - unblended.visibility[i]) > 0.02f;
+    }
+
+    // What the shading uses, the light's share of each pixel's colour beyond the ambient, is what the
+    // visibility view shows (and the accuracy metrics read): in the band, both cascades' lookups blended.
+    const std::vector<float> shadowed = shadedLinear(scene, camera, settings, size);
+    const std::vector<float> unshadowed = shadedLinear(scene, camera, std::nullopt, size);
+    std::vector<engine::EntityId> lights;
+    scene.forEach([&](engine::EntityId id, const engine::Entity& entity) {
+        if (entity.light) {
+            lights.push_back(id);
+        }
+    });
+    for (const engine::EntityId light : lights) {
+        scene.entity(light).light->intensity = 0.0f;
+    }
+    const std::vector<float> ambient = shadedLinear(scene, camera, std::nullopt, size);
+    std::size_t compared = 0;
+    float largestDifference = 0.0f;
+    for (std::size_t i = 0; i < blended.visibility.size(); ++i) {
+        const float light = unshadowed[4 * i + 1] - ambient[4 * i + 1];
+        if (light > 0.05f) {
+            const float share = (shadowed[4 * i + 1] - ambient[4 * i + 1]) / light;
+            largestDifference = std::max(largestDifference, std::abs(share - blended.visibility[i]));
+            ++compared;
+        }
+    }
+    std::cout << "[ measured ] blend band: " << mixed << " pixels change; the view against the shading over "
+              << compared << " lit-facing pixels: largest difference " << largestDifference << "\n";
+    EXPECT_GT(mixed, 100u);
+    EXPECT_GT(compared, 20000u);
+    EXPECT_LT(largestDifference, 1e-3f);
 }
 
 INSTANTIATE_TEST_SUITE_P(Techniques, CascadedShadowsGLTest,

@@ -73,6 +73,8 @@ enum class ShadowDebugView {
     TexelCheckerboard,
     GradientMagnitude,
     Bias,
+    /// The first shadowed light's visibility as the shading uses it (in a cascade blend band, both cascades'
+    /// blended): what the accuracy measurements read.
     Visibility,
     ShadowMap,
     FullKernel,

@@ -460,7 +460,7 @@ GsShadowProjection gsClipmapLevelProjection(int slot, GsShadowFragment fragment,
 // Which map of light `lightIndex` was read, for the maps debug view: cascade index or cube face, -1 for none.
 int gsDebugMap = -1;
 
-float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
+float gsShadowLightVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
     // Screen derivatives must be taken before any per-pixel branch (a quad's fragments may pick other maps).
     vec3 dPdx = dFdxFine(worldPosition);
     vec3 dPdy = dFdyFine(worldPosition);
@@ -499,10 +499,13 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
                                            : 0.0;
         // The next cascade fades in over the blend band. One lookup written once, in a loop of one or two
         // iterations rather than two inlined lookups: llvmpipe runs a branch's code for every fragment, but
-        // leaves a loop once no fragment of its group continues, so only groups in a band pay twice.
+        // leaves a loop once no fragment of its group continues, so only groups in a band pay twice. It checks
+        // that only at the loop's end, so the test is there (do-while): a for loop's test at the top ran the
+        // body once more, masked off, for every group.
         float visibility = 0.0;
         int last = weight > 0.0 ? cascade + 1 : cascade;
-        for (int c = cascade; c <= last; ++c) {
+        int c = cascade;
+        do {
             int slot = maps.slots[c];
 #ifdef GS_SHADOW_VERTEX_PROJECTION
             float inCascade =
@@ -512,7 +515,8 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
             float inCascade = gsShadowMapVisibility(slot, fragment);
 #endif
             visibility += (c == cascade ? 1.0 - weight : weight) * inCascade;
-        }
+            ++c;
+        } while (c <= last);
         return visibility;
     }
 #endif
@@ -609,6 +613,17 @@ float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 t
     }
 #endif
     return 1.0;
+}
+
+// Visibility of light `lightIndex` at the fragment, as the shading uses it. The visibility debug view shows the
+// first shadowed light's, across a cascade blend band too (a map's own lookup is only one of its two terms).
+float gsShadowVisibility(int lightIndex, vec3 worldPosition, vec3 normal, vec3 toLight) {
+    bool first = !gsDebugSet;
+    float visibility = gsShadowLightVisibility(lightIndex, worldPosition, normal, toLight);
+    if (first && gsDebugSet) {
+        gsDebugVisibility = visibility;
+    }
+    return visibility;
 }
 
 // Debug views replace the shaded colour (final_color slot).

@@ -17,15 +17,17 @@ GsShadowSample gsShadowSample_Jittered(GsShadowLookup lookup) {
     float lit = 0.0;
     int taken = 0;
     for (int pair = 0; pair < gsJitterPairs; ++pair) {
-#ifdef GS_SHADOW_EARLY_OUT
-        if (pair == gsEarlyOutPairs && gsTestTapsAgree(lit, float(taken))) {
-            break;
-        }
-#endif
         vec4 offsets = (texelFetch(gsShadowJitter, ivec3(tile, pair), 0) * 2.0 - 1.0) * gsShadowJitterRadius;
         lit += gsJitteredTap(lookup, offsets.xy);
         lit += gsJitteredTap(lookup, offsets.zw);
         taken += 2;
+#ifdef GS_SHADOW_EARLY_OUT
+        // At the pair's end, not the next one's start: llvmpipe leaves a loop only at its end, once no fragment
+        // of its group continues, so a test at the start ran one more pair, masked off, for every group.
+        if (pair + 1 == gsEarlyOutPairs && gsTestTapsAgree(lit, float(taken))) {
+            break;
+        }
+#endif
     }
     GsShadowSample result = gsShadowResult(lit / float(max(taken, 1)), 1.0, lookup);
     result.fullKernel = taken == 2 * gsJitterPairs;
