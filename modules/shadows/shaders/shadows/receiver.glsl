@@ -428,7 +428,6 @@ float gsShadowMapVisibilityAt(int slot, GsShadowFragment fragment, GsShadowProje
         vec3 texelDy = gsShadowDerivative(clip, projected.dy) * resolution;
         gsDebugDensity = gsTexelFootprintPixels(texelDx.xy, texelDy.xy);
 #endif
-        gsDebugVisibility = result.visibility;
         gsDebugGradient = length(result.gradient);
         gsDebugBias = result.bias;
         gsDebugStored = result.stored;
